@@ -1,0 +1,1 @@
+// placeholder translation unit so an all-header core is still a library

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# CUDA build of the KOKKOS sources with nvcc (no GPU needed: compile only).
+#   scripts/cuda_check.sh          configure a Kokkos-CUDA LAMMPS tree (seconds) and compile
+#                                  our *_kokkos.cpp against it with nvcc_wrapper
+#   scripts/cuda_check.sh --full   also build that whole LAMMPS tree (~20 min on 2 cores)
+# Needs scripts/setup.sh first (sources, patches). CUDA_HOME defaults to /usr/local/cuda.
+set -euo pipefail
+REPO=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+# shellcheck source=scripts/versions.sh
+source "$REPO/scripts/versions.sh"
+CUDA_HOME=${CUDA_HOME:-/usr/local/cuda}
+CUDA_ARCH=${PW_CUDA_ARCH:-AMPERE80}   # Kokkos_ARCH_<...>: AMPERE80 = sm_80, HOPPER90 needs Kokkos 4
+log() { printf '[cuda %s] %s\n' "$(date +%H:%M:%S)" "$*"; }
+
+if [ ! -x "$CUDA_HOME/bin/nvcc" ]; then
+  if [ "${CI:-}" = "true" ] || [ "${PW_REQUIRE_CUDA:-0}" = "1" ]; then
+    echo "nvcc not found in $CUDA_HOME: the CUDA compile check cannot run" >&2; exit 1
+  fi
+  log "no nvcc in $CUDA_HOME: skipping the CUDA compile check"; exit 0
+fi
+export PATH="$CUDA_HOME/bin:$PATH"
+WRAPPER="$LAMMPS_SRC/lib/kokkos/bin/nvcc_wrapper"
+export NVCC_WRAPPER_DEFAULT_COMPILER=${NVCC_WRAPPER_DEFAULT_COMPILER:-g++}
+
+if [ ! -f "$LAMMPS_CUDA_BUILD/build.ninja" ]; then
+  log "configuring the Kokkos-CUDA LAMMPS tree in $LAMMPS_CUDA_BUILD"
+  cmake -S "$LAMMPS_SRC/cmake" -B "$LAMMPS_CUDA_BUILD" -G Ninja -D CMAKE_BUILD_TYPE=Release \
+    -D CMAKE_CXX_COMPILER="$WRAPPER" -D CMAKE_CXX_COMPILER_LAUNCHER=ccache \
+    -D BUILD_SHARED_LIBS=on -D BUILD_MPI=on -D BUILD_OMP=off -D LAMMPS_EXCEPTIONS=on \
+    -D PKG_GRANULAR=on -D PKG_PLUGIN=on -D PKG_KOKKOS=on \
+    -D Kokkos_ENABLE_CUDA=on -D Kokkos_ENABLE_SERIAL=on -D "Kokkos_ARCH_$CUDA_ARCH=on" \
+    -D WITH_JPEG=off -D WITH_PNG=off -D WITH_FFMPEG=off >"$PW_CACHE/cuda-configure.log" 2>&1 ||
+    { tail -30 "$PW_CACHE/cuda-configure.log"; exit 1; }
+fi
+
+if [ "${1:-}" = "--full" ]; then
+  log "building the whole Kokkos-CUDA LAMMPS tree (~20 min on 2 cores cold)"
+  cmake --build "$LAMMPS_CUDA_BUILD" -j "${PW_JOBS:-$(nproc)}"
+fi
+
+log "compiling the package's KOKKOS sources with nvcc_wrapper"
+if [ ! -f "$REPO/build-cuda/build.ninja" ]; then
+  cmake -S "$REPO" -B "$REPO/build-cuda" -G Ninja -D CMAKE_BUILD_TYPE=Release \
+    -D CMAKE_CXX_COMPILER="$WRAPPER" -D CMAKE_CXX_COMPILER_LAUNCHER=ccache -D PW_CUDA_CHECK=ON \
+    -D LAMMPS_SOURCE_DIR="$LAMMPS_SRC/src" -D LAMMPS_BUILD_DIR="$LAMMPS_CUDA_BUILD" >/dev/null
+fi
+cmake --build "$REPO/build-cuda" -j "${PW_JOBS:-$(nproc)}"
+log "CUDA compile check passed"

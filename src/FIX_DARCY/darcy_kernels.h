@@ -1,0 +1,119 @@
+// Header-only physics of the Darcy pore-pressure grid (MODEL.md §3), shared by the CPU
+// solver, the LAMMPS fix and its KOKKOS variant. Everything here is device-safe:
+// PODs, raw pointers, ints, doubles and the <cmath> functions CUDA provides.
+#ifndef PW_DARCY_KERNELS_H
+#define PW_DARCY_KERNELS_H
+
+#include "pw_inline.h"
+
+#include <cmath>
+
+namespace porewater {
+
+// Cell-centred grid over [xlo, xlo+nx*dx) x [ylo, ylo+ny*dy) x [zlo, zlo+nz*dz],
+// periodic in x and y. Cell (i,j,k) has flat index i + nx*(j + ny*k) and centre
+// (xlo + (i+1/2) dx, ylo + (j+1/2) dy, zlo + (k+1/2) dz).
+struct GridGeom {
+  double xlo, ylo, zlo;
+  double dx, dy, dz;
+  int nx, ny, nz;
+};
+
+PW_INLINE int cell_count(const GridGeom &g) { return g.nx * g.ny * g.nz; }
+
+PW_INLINE double cell_volume(const GridGeom &g) { return g.dx * g.dy * g.dz; }
+
+PW_INLINE int cell_index(const GridGeom &g, int i, int j, int k)
+{
+  return i + g.nx * (j + g.ny * k);
+}
+
+// Periodic wrap of a cell index into [0, n).
+PW_INLINE int wrap_index(int i, int n)
+{
+  const int r = i % n;
+  return r < 0 ? r + n : r;
+}
+
+// Mirror a layer index at the bottom face (cell -1 -> 0, -2 -> 1) and at the top face
+// (cell n -> n-1): weight outside the grid is folded back, as if the grains were
+// mirrored at the impermeable bottom and at the top.
+PW_INLINE int mirror_index(int k, int n)
+{
+  if (k < 0) k = -1 - k;
+  if (k >= n) k = 2 * n - 1 - k;
+  return k < 0 ? 0 : (k >= n ? n - 1 : k);  // points more than a grid height outside
+}
+
+// 1-D hat weight: 1 - |d|/delta for |d| < delta, else 0.
+PW_INLINE double hat_weight(double d, double delta)
+{
+  const double w = 1.0 - fabs(d) / delta;
+  return w > 0.0 ? w : 0.0;
+}
+
+// Trilinear weight s(d) = prod_a (1 - |d_a|/Delta_a) of a point at offset d from a centre.
+PW_INLINE double trilinear_weight(const GridGeom &g, double ddx, double ddy, double ddz)
+{
+  return hat_weight(ddx, g.dx) * hat_weight(ddy, g.dy) * hat_weight(ddz, g.dz);
+}
+
+// Kozeny-Carman permeability k = kc phi^3/(1-phi)^2, capped at kmax when kmax > 0.
+PW_INLINE double kozeny_carman(double porosity, double kc, double kmax)
+{
+  const double solid = 1.0 - porosity;
+  const double k = kc * porosity * porosity * porosity / (solid * solid);
+  return (kmax > 0.0 && k > kmax) ? kmax : k;
+}
+
+// Harmonic mean of two face permeabilities (zero if either is zero: no flux).
+PW_INLINE double harmonic_mean(double a, double b)
+{
+  return (a > 0.0 && b > 0.0) ? 2.0 * a * b / (a + b) : 0.0;
+}
+
+PW_INLINE double clamp_porosity(double porosity, double porosity_min, double porosity_max)
+{
+  return porosity < porosity_min ? porosity_min
+                                 : (porosity > porosity_max ? porosity_max : porosity);
+}
+
+// The 8 (cell index, weight) pairs of the trilinear stencil of point (x,y,z): equal to
+// trilinear_weight(point - centre) for every cell, periodic in x and y, with the weight
+// of cells below the bottom / above the top layer folded into the mirrored cells, so
+// the weights always sum to 1 (deposited volume is conserved). Indices may repeat.
+PW_INLINE void stencil(const GridGeom &g, double x, double y, double z, int idx[8],
+                       double w[8])
+{
+  // position in units of cells from centre 0, kept within +-1e9 so that the int casts
+  // below are defined for any input (fmax maps NaN to the bound; callers that care check
+  // finiteness themselves)
+  const double ux = fmin(fmax((x - g.xlo) / g.dx - 0.5, -1e9), 1e9);
+  const double uy = fmin(fmax((y - g.ylo) / g.dy - 0.5, -1e9), 1e9);
+  const double uz = fmin(fmax((z - g.zlo) / g.dz - 0.5, -1e9), 1e9);
+  const int i0 = (int) floor(ux), j0 = (int) floor(uy), k0 = (int) floor(uz);
+  const double fx = ux - i0, fy = uy - j0, fz = uz - k0;
+  const int ii[2] = {wrap_index(i0, g.nx), wrap_index(i0 + 1, g.nx)};
+  const int jj[2] = {wrap_index(j0, g.ny), wrap_index(j0 + 1, g.ny)};
+  const int kk[2] = {mirror_index(k0, g.nz), mirror_index(k0 + 1, g.nz)};
+  const double wx[2] = {1.0 - fx, fx}, wy[2] = {1.0 - fy, fy}, wz[2] = {1.0 - fz, fz};
+  for (int c = 0; c < 8; ++c) {
+    const int a = c & 1, b = (c >> 1) & 1, e = c >> 2;
+    idx[c] = cell_index(g, ii[a], jj[b], kk[e]);
+    w[c] = wx[a] * wy[b] * wz[e];
+  }
+}
+
+// Interpolate a cell field to a point from its stencil; field[stride*cell] is the value
+// (stride 3 with an offset pointer picks one component of an interleaved vector field).
+PW_INLINE double interpolate(const double *field, int stride, const int idx[8],
+                             const double w[8])
+{
+  double sum = 0.0;
+  for (int c = 0; c < 8; ++c) sum += w[c] * field[stride * idx[c]];
+  return sum;
+}
+
+}  // namespace porewater
+
+#endif

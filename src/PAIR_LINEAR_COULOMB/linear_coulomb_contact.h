@@ -1,0 +1,139 @@
+// The contact law of pair linear/coulomb (MODEL.md §1), written once and called by the
+// CPU style, the KOKKOS style and the unit tests.
+//
+// Operation order deliberately follows LAMMPS 29Sep2021 gran/hooke/history with zero
+// damping, so that `lever radius` reproduces it bit for bit (a chaotic granular flow
+// amplifies any round-off difference).
+#ifndef PW_LINEAR_COULOMB_CONTACT_H
+#define PW_LINEAR_COULOMB_CONTACT_H
+
+#include "pw_inline.h"
+
+#include <cmath>
+
+namespace porewater {
+
+enum LeverArm { LEVER_CONTACT = 0, LEVER_RADIUS = 1 };
+
+struct ContactForce {
+  double f[3];      // force on i (−f acts on j)
+  double ft[3];     // its tangential part f_t
+  double ccel;      // normal part per unit |del|: f_n = ccel·del = k_n δ n
+  double tor[3];    // n × f_t: torque on a grain is −ℓ·tor with its own lever arm ℓ
+  double lever_i;   // ℓ_i
+  double lever_j;   // ℓ_j
+  double energy;    // elastic energy ½k_n δ² + ½|f_t|²/k_t stored in the contact
+  double dissipated;  // energy taken out of the tangential spring by projection and cap
+};
+
+// Lever arm of a grain of radius `rad` in a contact of overlap `overlap`.
+PW_INLINE double lever_arm(const int lever, const double rad, const double overlap)
+{
+  return lever == LEVER_RADIUS ? rad : rad - 0.5 * overlap;
+}
+
+// Contact between grains i and j that overlap (rsq < (radi+radj)²).
+// del = x_i − x_j; xi[3] is the tangential spring history, updated in place;
+// update_history = 0 during setup (forces from the stored spring, no integration),
+// as gran/hooke/history does.
+PW_INLINE ContactForce linear_coulomb_contact(
+    const double delx, const double dely, const double delz, const double rsq,
+    const double radi, const double radj, const double *vi, const double *vj,
+    const double *wi, const double *wj, const double kn, const double kt, const double mu,
+    const int lever, const int update_history, const double dt, double *xi)
+{
+  ContactForce c;
+  const double radsum = radi + radj;
+  const double r = sqrt(rsq);
+  const double rinv = 1.0 / r;
+  const double rsqinv = 1.0 / rsq;
+  const double overlap = radsum - r;
+  c.lever_i = lever_arm(lever, radi, overlap);
+  c.lever_j = lever_arm(lever, radj, overlap);
+
+  // relative velocity and its part tangential to n = del/r
+  const double vr1 = vi[0] - vj[0];
+  const double vr2 = vi[1] - vj[1];
+  const double vr3 = vi[2] - vj[2];
+  const double vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
+  const double vt1 = vr1 - delx * vnnr * rsqinv;
+  const double vt2 = vr2 - dely * vnnr * rsqinv;
+  const double vt3 = vr3 - delz * vnnr * rsqinv;
+
+  // contact-point velocity: subtract (ℓ_i ω_i + ℓ_j ω_j) × n
+  const double wr1 = (c.lever_i * wi[0] + c.lever_j * wj[0]) * rinv;
+  const double wr2 = (c.lever_i * wi[1] + c.lever_j * wj[1]) * rinv;
+  const double wr3 = (c.lever_i * wi[2] + c.lever_j * wj[2]) * rinv;
+  const double vtr1 = vt1 - (delz * wr2 - dely * wr3);
+  const double vtr2 = vt2 - (delx * wr3 - delz * wr1);
+  const double vtr3 = vt3 - (dely * wr1 - delx * wr2);
+
+  // normal force magnitude per unit |del|: k_n δ / r
+  const double ccel = kn * overlap * rinv;
+
+  // tangential spring: integrate, then project onto the current tangent plane
+  if (update_history) {
+    xi[0] += vtr1 * dt;
+    xi[1] += vtr2 * dt;
+    xi[2] += vtr3 * dt;
+  }
+  const double xisq_before = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
+  const double ximag = sqrt(xisq_before);
+  const double rsht = (xi[0] * delx + xi[1] * dely + xi[2] * delz) * rsqinv;
+  if (update_history) {
+    xi[0] -= rsht * delx;
+    xi[1] -= rsht * dely;
+    xi[2] -= rsht * delz;
+  }
+
+  // Coulomb cap: a spring beyond μ|f_n| is reset to the limit
+  double fs1 = -(kt * xi[0]);
+  double fs2 = -(kt * xi[1]);
+  double fs3 = -(kt * xi[2]);
+  const double fs = sqrt(fs1 * fs1 + fs2 * fs2 + fs3 * fs3);
+  const double fn = mu * fabs(ccel * r);
+  if (fs > fn) {
+    if (ximag != 0.0) {
+      const double scale = fn / fs;
+      xi[0] = scale * xi[0];
+      xi[1] = scale * xi[1];
+      xi[2] = scale * xi[2];
+      fs1 *= scale;
+      fs2 *= scale;
+      fs3 *= scale;
+    } else {
+      fs1 = fs2 = fs3 = 0.0;
+    }
+  }
+
+  c.ccel = ccel;
+  c.ft[0] = fs1;
+  c.ft[1] = fs2;
+  c.ft[2] = fs3;
+  c.f[0] = delx * ccel + fs1;
+  c.f[1] = dely * ccel + fs2;
+  c.f[2] = delz * ccel + fs3;
+  c.tor[0] = rinv * (dely * fs3 - delz * fs2);
+  c.tor[1] = rinv * (delz * fs1 - delx * fs3);
+  c.tor[2] = rinv * (delx * fs2 - dely * fs1);
+  const double xisq_after = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
+  c.energy = 0.5 * kn * overlap * overlap + 0.5 * kt * xisq_after;
+  c.dissipated = 0.5 * kt * (xisq_before - xisq_after);
+  return c;
+}
+
+// Energy a spring of history xi loses when its contact opens (MODEL.md: it is forgotten).
+PW_INLINE double opening_loss(const double kt, const double *xi)
+{
+  return 0.5 * kt * (xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
+}
+
+// Mixing of per-type coefficients for I != J: geometric mean, as pair granular does.
+PW_INLINE double mix_geometric(const double a, const double b)
+{
+  return sqrt(a * b);
+}
+
+}    // namespace porewater
+
+#endif

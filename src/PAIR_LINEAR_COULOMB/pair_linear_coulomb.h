@@ -1,0 +1,44 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   pair_style linear/coulomb: linear normal and tangential springs with a Coulomb cap,
+   rotation-corrected tangential history, torque, no damping (Damsgaard et al. 2016).
+------------------------------------------------------------------------- */
+
+#ifndef PW_PAIR_LINEAR_COULOMB_H
+#define PW_PAIR_LINEAR_COULOMB_H
+
+#include "pair_gran_hooke_history.h"
+
+namespace LAMMPS_NS {
+
+// Reuses gran/hooke/history's neighbor-history machinery (fix NEIGH_HISTORY, granular
+// neighbor list, cutoffs from radii); replaces its force law and its global coefficients
+// by per-type kn, kt, mu.
+class PairLinearCoulomb : public PairGranHookeHistory {
+ public:
+  PairLinearCoulomb(class LAMMPS *);
+  ~PairLinearCoulomb() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  void write_data(FILE *) override;
+  void write_data_all(FILE *) override;
+  double single(int, int, int, int, double, double, double, double &) override;
+  void *extract(const char *, int &) override;
+
+ protected:
+  int lever;                    // porewater::LEVER_CONTACT or LEVER_RADIUS
+  int track_dissipation;        // accumulate frictional dissipation into pvector[0]
+  double dissipated;            // this rank's share since the pair style was defined
+  double **kn_ij, **kt_ij, **mu_ij;   // per type pair, mixed in init_one()
+  void allocate_coeffs();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,83 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   pair_style linear/coulomb/kk: the KOKKOS variant of linear/coulomb. The force law is
+   porewater::linear_coulomb_contact(), shared with the CPU style.
+------------------------------------------------------------------------- */
+
+#ifndef PW_PAIR_LINEAR_COULOMB_KOKKOS_H
+#define PW_PAIR_LINEAR_COULOMB_KOKKOS_H
+
+#include "kokkos_type.h"
+#include "pair_kokkos.h"
+#include "pair_linear_coulomb.h"
+
+namespace LAMMPS_NS {
+
+template <class DeviceType> class FixNeighHistoryKokkos;
+
+template <int NEIGHFLAG, int NEWTON_PAIR, int EVFLAG, int UPDATE_HISTORY>
+struct TagPairLinearCoulombCompute {};
+
+template <class DeviceType> class PairLinearCoulombKokkos : public PairLinearCoulomb {
+ public:
+  typedef DeviceType device_type;
+  typedef ArrayTypes<DeviceType> AT;
+  typedef EV_FLOAT value_type;
+
+  PairLinearCoulombKokkos(class LAMMPS *);
+  ~PairLinearCoulombKokkos() override;
+  void compute(int, int) override;
+  void init_style() override;
+  double init_one(int, int) override;
+
+  // one pass per owned grain: open contacts are cleared, closed ones computed
+  template <int NEIGHFLAG, int NEWTON_PAIR, int EVFLAG, int UPDATE_HISTORY>
+  KOKKOS_INLINE_FUNCTION void
+  operator()(TagPairLinearCoulombCompute<NEIGHFLAG, NEWTON_PAIR, EVFLAG, UPDATE_HISTORY>, const int,
+             EV_FLOAT &) const;
+  template <int NEIGHFLAG, int NEWTON_PAIR, int EVFLAG, int UPDATE_HISTORY>
+  KOKKOS_INLINE_FUNCTION void
+  operator()(TagPairLinearCoulombCompute<NEIGHFLAG, NEWTON_PAIR, EVFLAG, UPDATE_HISTORY>,
+             const int) const;
+
+  struct ContactParams {
+    KOKKOS_INLINE_FUNCTION ContactParams() : kn(0.0), kt(0.0), mu(0.0) {}
+    double kn, kt, mu;
+  };
+
+ protected:
+  template <int NEIGHFLAG, int NEWTON_PAIR, int EVFLAG, int UPDATE_HISTORY>
+  void launch(int inum, EV_FLOAT &ev);
+  template <int NEIGHFLAG, int NEWTON_PAIR>
+  KOKKOS_INLINE_FUNCTION void tally(EV_FLOAT &ev, int i, int j, double energy, const double *fij,
+                                    double delx, double dely, double delz) const;
+
+  typename AT::t_x_array_randomread x;
+  typename AT::t_v_array_randomread v;
+  typename AT::t_v_array_randomread omega;
+  typename AT::t_f_array f;
+  typename AT::t_f_array torque;
+  typename AT::t_int_1d_randomread type;
+  typename AT::t_float_1d_randomread radius;
+
+  DAT::tdual_efloat_1d k_eatom;
+  DAT::tdual_virial_array k_vatom;
+  typename AT::t_efloat_1d d_eatom;
+  typename AT::t_virial_array d_vatom;
+
+  typename AT::t_neighbors_2d d_neighbors;
+  typename AT::t_int_1d_randomread d_ilist;
+  typename AT::t_int_1d_randomread d_numneigh;
+  typename AT::t_int_2d d_firsttouch;
+  typename AT::t_float_2d d_firstxi;
+
+  Kokkos::DualView<ContactParams **, Kokkos::LayoutRight, DeviceType> k_params;
+  typename Kokkos::DualView<ContactParams **, Kokkos::LayoutRight, DeviceType>::t_dev_const_um
+      params;
+
+  int neighflag, newton_pair, nlocal, eflag, vflag;
+  FixNeighHistoryKokkos<DeviceType> *fix_historyKK;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
