@@ -150,6 +150,19 @@ template <class DeviceType> void PairLinearCoulombKokkos<DeviceType>::compute(in
   d_firsttouch = fix_historyKK->k_firstflag.template view<DeviceType>();
   d_firstxi = fix_historyKK->k_firstvalue.template view<DeviceType>();
 
+  need_dup = lmp->kokkos->need_dup<DeviceType>();
+  if (need_dup) {
+    dup_f = Kokkos::Experimental::create_scatter_view<Kokkos::Experimental::ScatterSum,
+                                                      Kokkos::Experimental::ScatterDuplicated>(f);
+    dup_torque = Kokkos::Experimental::create_scatter_view<
+        Kokkos::Experimental::ScatterSum, Kokkos::Experimental::ScatterDuplicated>(torque);
+  } else {
+    ndup_f = Kokkos::Experimental::create_scatter_view<
+        Kokkos::Experimental::ScatterSum, Kokkos::Experimental::ScatterNonDuplicated>(f);
+    ndup_torque = Kokkos::Experimental::create_scatter_view<
+        Kokkos::Experimental::ScatterSum, Kokkos::Experimental::ScatterNonDuplicated>(torque);
+  }
+
   const int inum = list->inum;
   const int evf = (eflag || vflag || track_dissipation) ? 1 : 0;
   EV_FLOAT ev;
@@ -168,6 +181,13 @@ template <class DeviceType> void PairLinearCoulombKokkos<DeviceType>::compute(in
     PW_LAUNCH(HALFTHREAD, 0)
   }
 #undef PW_LAUNCH
+
+  if (need_dup) {
+    Kokkos::Experimental::contribute(f, dup_f);
+    Kokkos::Experimental::contribute(torque, dup_torque);
+    dup_f = DupForce();    // free the per-thread copies between steps
+    dup_torque = DupForce();
+  }
 
   if (eflag_global) eng_vdwl += ev.evdwl;
   if (track_dissipation) dissipated += ev.ecoul;
@@ -204,13 +224,13 @@ KOKKOS_INLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
     TagPairLinearCoulombCompute<NEIGHFLAG, NEWTON_PAIR, EVFLAG, UPDATE_HISTORY>, const int ii,
     EV_FLOAT &ev) const
 {
-  // atomic updates only where threads share j (HALFTHREAD)
-  Kokkos::View<F_FLOAT *[3], typename DAT::t_f_array::array_layout,
-               typename KKDevice<DeviceType>::value, Kokkos::MemoryTraits<AtomicF<NEIGHFLAG>::value>>
-      a_f = f;
-  Kokkos::View<F_FLOAT *[3], typename DAT::t_f_array::array_layout,
-               typename KKDevice<DeviceType>::value, Kokkos::MemoryTraits<AtomicF<NEIGHFLAG>::value>>
-      a_torque = torque;
+  // threads sharing j (HALFTHREAD) write per-thread copies on OpenMP, atomically on GPUs
+  auto v_f = ScatterViewHelper<typename NeedDup<NEIGHFLAG, DeviceType>::value, DupForce,
+                               NonDupForce>::get(dup_f, ndup_f);
+  auto v_torque = ScatterViewHelper<typename NeedDup<NEIGHFLAG, DeviceType>::value, DupForce,
+                                    NonDupForce>::get(dup_torque, ndup_torque);
+  auto a_f = v_f.template access<typename AtomicDup<NEIGHFLAG, DeviceType>::value>();
+  auto a_torque = v_torque.template access<typename AtomicDup<NEIGHFLAG, DeviceType>::value>();
 
   const int i = d_ilist[ii];
   const double xtmp = x(i, 0), ytmp = x(i, 1), ztmp = x(i, 2);

@@ -59,6 +59,21 @@ template <class DeviceType> class PairLinearCoulombKokkos : public PairLinearCou
   typename AT::t_int_1d_randomread type;
   typename AT::t_float_1d_randomread radius;
 
+  // force and torque scatter: duplicated per thread on OpenMP, atomic on GPUs, plain serially
+  typedef Kokkos::Experimental::ScatterView<F_FLOAT *[3], typename DAT::t_f_array::array_layout,
+                                            typename KKDevice<DeviceType>::value,
+                                            Kokkos::Experimental::ScatterSum,
+                                            Kokkos::Experimental::ScatterDuplicated>
+      DupForce;
+  typedef Kokkos::Experimental::ScatterView<F_FLOAT *[3], typename DAT::t_f_array::array_layout,
+                                            typename KKDevice<DeviceType>::value,
+                                            Kokkos::Experimental::ScatterSum,
+                                            Kokkos::Experimental::ScatterNonDuplicated>
+      NonDupForce;
+  DupForce dup_f, dup_torque;
+  NonDupForce ndup_f, ndup_torque;
+  int need_dup;
+
   DAT::tdual_efloat_1d k_eatom;
   DAT::tdual_virial_array k_vatom;
   typename AT::t_efloat_1d d_eatom;

@@ -157,9 +157,10 @@ namespace {
 // LAMMPS' bench/data.chute cut to 3044 grains (x < 19, y < 4 of a 20 × 5 box, so that no
 // grain overlaps across the new periodic seams), damping off, 1000 steps.
 std::map<long, std::vector<double>> chute(const std::string &pair_style, const std::string &pair_coeff,
-                                          Accel accel = Accel::none, double *ke = nullptr)
+                                          Accel accel = Accel::none, double *ke = nullptr,
+                                          std::vector<std::string> args = {})
 {
-  Lammps l(accel);
+  Lammps l(accel, MPI_COMM_WORLD, args);
   l.commands("units lj\natom_style sphere\nboundary p p fs\nnewton off\ncomm_modify vel yes\n");
   l.command(std::string("read_data ") + PW_LAMMPS_BENCH + "/data.chute");
   l.commands("region keep block 0 19 0 4 INF INF units box side out\n"
@@ -213,6 +214,19 @@ TEST(PairLinearCoulomb, KokkosEqualsCpu)
   const double dx = pwtest::max_abs_diff(cpu, kk);
   std::printf("[ report ] linear/coulomb/kk vs CPU after 1000 steps: max |dx| = %.3e\n", dx);
   EXPECT_LE(dx, 1e-10);
+  EXPECT_NEAR(ke_kk, ke_cpu, 1e-10 * ke_cpu);
+}
+
+TEST(PairLinearCoulomb, KokkosWithTwoThreadsEqualsCpu)
+{
+  // HALFTHREAD neighbor lists: per-thread force copies summed at the end (OpenMP)
+  double ke_cpu = 0, ke_kk = 0;
+  const auto cpu = chute("linear/coulomb", "* * 200000.0 200000.0 0.5", Accel::none, &ke_cpu);
+  const auto kk = chute("linear/coulomb", "* * 200000.0 200000.0 0.5", Accel::none, &ke_kk,
+                        {"-k", "on", "t", "2", "-sf", "kk"});
+  const double dx = pwtest::max_abs_diff(cpu, kk);
+  std::printf("[ report ] linear/coulomb/kk 2 threads vs CPU after 1000 steps: max |dx| = %.3e\n", dx);
+  EXPECT_LE(dx, 1e-10);    // round-off, as for one thread
   EXPECT_NEAR(ke_kk, ke_cpu, 1e-10 * ke_cpu);
 }
 
