@@ -7,6 +7,12 @@
 #include "fix.h"
 #include "pair.h"
 
+#include "fix_nve_sphere_ty3.h"
+#include "fix_nve_sphere_ty3_kokkos.h"
+#include "fix_shear_stress.h"
+#include "fix_shear_stress_kokkos.h"
+#include "fix_wall_stress.h"
+#include "fix_wall_stress_kokkos.h"
 
 #include "pair_linear_coulomb.h"
 #include "pair_linear_coulomb_kokkos.h"
@@ -71,5 +77,30 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   r.add("pair", "linear/coulomb/kk/host", "linear/coulomb, KOKKOS host",
         (lammpsplugin_factory1 *) &pair_creator<PairLinearCoulombKokkos<LMPHostType>>);
 
+  // fixes: r.add("fix", "name", "info", (lammpsplugin_factory2 *) &fix_creator<FixClass>);
+  r.add("fix", "wall/stress", "stress-controlled frictionless top wall with mass",
+        (lammpsplugin_factory2 *) &fix_creator<FixWallStress>);
+  r.add("fix", "wall/stress/kk", "wall/stress, KOKKOS",
+        (lammpsplugin_factory2 *) &fix_creator<FixWallStressKokkos<LMPDeviceType>>);
+  r.add("fix", "wall/stress/kk/device", "wall/stress, KOKKOS device",
+        (lammpsplugin_factory2 *) &fix_creator<FixWallStressKokkos<LMPDeviceType>>);
+  r.add("fix", "wall/stress/kk/host", "wall/stress, KOKKOS host",
+        (lammpsplugin_factory2 *) &fix_creator<FixWallStressKokkos<LMPHostType>>);
+  r.add("fix", "shear/stress", "top layer as a rigid plate driven by a shear stress",
+        (lammpsplugin_factory2 *) &fix_creator<FixShearStress>);
+  r.add("fix", "shear/stress/kk", "shear/stress, KOKKOS",
+        (lammpsplugin_factory2 *) &fix_creator<FixShearStressKokkos<LMPDeviceType>>);
+  r.add("fix", "shear/stress/kk/device", "shear/stress, KOKKOS device",
+        (lammpsplugin_factory2 *) &fix_creator<FixShearStressKokkos<LMPDeviceType>>);
+  r.add("fix", "shear/stress/kk/host", "shear/stress, KOKKOS host",
+        (lammpsplugin_factory2 *) &fix_creator<FixShearStressKokkos<LMPHostType>>);
+  r.add("fix", "nve/sphere/ty3", "third-order Taylor integrator of finite-size spheres",
+        (lammpsplugin_factory2 *) &fix_creator<FixNVESphereTY3>);
+  r.add("fix", "nve/sphere/ty3/kk", "nve/sphere/ty3, KOKKOS",
+        (lammpsplugin_factory2 *) &fix_creator<FixNVESphereTY3Kokkos<LMPDeviceType>>);
+  r.add("fix", "nve/sphere/ty3/kk/device", "nve/sphere/ty3, KOKKOS device",
+        (lammpsplugin_factory2 *) &fix_creator<FixNVESphereTY3Kokkos<LMPDeviceType>>);
+  r.add("fix", "nve/sphere/ty3/kk/host", "nve/sphere/ty3, KOKKOS host",
+        (lammpsplugin_factory2 *) &fix_creator<FixNVESphereTY3Kokkos<LMPHostType>>);
 
 }

@@ -1,0 +1,26 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   fix wall/stress/kk: the KOKKOS variant of wall/stress. The grain–wall contacts run as a
+   kernel over the atoms calling porewater::wall_contact(), shared with the CPU fix; the
+   wall itself (a few scalars) moves on the host.
+------------------------------------------------------------------------- */
+
+#ifndef PW_FIX_WALL_STRESS_KOKKOS_H
+#define PW_FIX_WALL_STRESS_KOKKOS_H
+
+#include "fix_wall_stress.h"
+#include "kokkos_type.h"
+
+namespace LAMMPS_NS {
+
+template <class DeviceType> class FixWallStressKokkos : public FixWallStress {
+ public:
+  FixWallStressKokkos(class LAMMPS *, int, char **);
+
+ protected:
+  double highest_grain_top() override;
+  void add_contact_forces(double *sums) override;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
