@@ -78,6 +78,14 @@ PW_INLINE double clamp_porosity(double porosity, double porosity_min, double por
                                  : (porosity > porosity_max ? porosity_max : porosity);
 }
 
+// u kept within +-1e9 (NaN to -1e9) so that stencil's int casts are defined for any
+// input; callers that care check finiteness themselves. Comparisons, not fmin/fmax:
+// those stay library calls without -ffinite-math-only.
+PW_INLINE double cell_coordinate(double u)
+{
+  return u >= -1e9 ? (u <= 1e9 ? u : 1e9) : -1e9;
+}
+
 // The 8 (cell index, weight) pairs of the trilinear stencil of point (x,y,z): equal to
 // trilinear_weight(point - centre) for every cell, periodic in x and y, with the weight
 // of cells below the bottom / above the top layer folded into the mirrored cells, so
@@ -85,12 +93,10 @@ PW_INLINE double clamp_porosity(double porosity, double porosity_min, double por
 PW_INLINE void stencil(const GridGeom &g, double x, double y, double z, int idx[8],
                        double w[8])
 {
-  // position in units of cells from centre 0, kept within +-1e9 so that the int casts
-  // below are defined for any input (fmax maps NaN to the bound; callers that care check
-  // finiteness themselves)
-  const double ux = fmin(fmax((x - g.xlo) / g.dx - 0.5, -1e9), 1e9);
-  const double uy = fmin(fmax((y - g.ylo) / g.dy - 0.5, -1e9), 1e9);
-  const double uz = fmin(fmax((z - g.zlo) / g.dz - 0.5, -1e9), 1e9);
+  // position in units of cells from centre 0
+  const double ux = cell_coordinate((x - g.xlo) / g.dx - 0.5);
+  const double uy = cell_coordinate((y - g.ylo) / g.dy - 0.5);
+  const double uz = cell_coordinate((z - g.zlo) / g.dz - 0.5);
   const int i0 = (int) floor(ux), j0 = (int) floor(uy), k0 = (int) floor(uz);
   const double fx = ux - i0, fy = uy - j0, fz = uz - k0;
   const int ii[2] = {wrap_index(i0, g.nx), wrap_index(i0 + 1, g.nx)};

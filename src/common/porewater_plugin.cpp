@@ -7,6 +7,8 @@
 #include "fix.h"
 #include "pair.h"
 
+#include "fix_darcy_pressure.h"
+#include "fix_darcy_pressure_kokkos.h"
 #include "fix_nve_sphere_ty3.h"
 #include "fix_nve_sphere_ty3_kokkos.h"
 #include "fix_shear_stress.h"
@@ -103,4 +105,12 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   r.add("fix", "nve/sphere/ty3/kk/host", "nve/sphere/ty3, KOKKOS host",
         (lammpsplugin_factory2 *) &fix_creator<FixNVESphereTY3Kokkos<LMPHostType>>);
 
+  r.add("fix", "darcy/pressure", "pore-water pressure on a Darcy grid, force on grains",
+        (lammpsplugin_factory2 *) &fix_creator<FixDarcyPressure>);
+  r.add("fix", "darcy/pressure/kk", "darcy/pressure, KOKKOS",
+        (lammpsplugin_factory2 *) &fix_creator<FixDarcyPressureKokkos<LMPDeviceType>>);
+  r.add("fix", "darcy/pressure/kk/device", "darcy/pressure, KOKKOS device",
+        (lammpsplugin_factory2 *) &fix_creator<FixDarcyPressureKokkos<LMPDeviceType>>);
+  r.add("fix", "darcy/pressure/kk/host", "darcy/pressure, KOKKOS host",
+        (lammpsplugin_factory2 *) &fix_creator<FixDarcyPressureKokkos<LMPHostType>>);
 }

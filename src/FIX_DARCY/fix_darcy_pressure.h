@@ -1,0 +1,79 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   fix darcy/pressure: pore-water pressure on a periodic Eulerian grid, advanced with
+   Crank-Nicolson, pushing on the grains (MODEL.md §3, doc/fix_darcy_pressure.rst).
+   The physics lives in the LAMMPS-free porewater::DarcySolver; this class adapts it.
+------------------------------------------------------------------------- */
+
+#ifndef PW_FIX_DARCY_PRESSURE_H
+#define PW_FIX_DARCY_PRESSURE_H
+
+#include "fix.h"
+
+#include "darcy_grains.h"
+#include "darcy_solver.h"
+#include "fix_darcy_pressure_settings.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixDarcyPressure : public Fix {
+ public:
+  FixDarcyPressure(class LAMMPS *, int, char **);
+  ~FixDarcyPressure() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void post_force(int) override;
+  double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+  void *extract(const char *, int &) override;
+  double memory_usage() override;
+
+ protected:
+  // The steps the KOKKOS variant runs as kernels:
+  // this rank's grains of the group -> deposits (zeroed by the caller), see DepositLayout
+  virtual void deposit_grains(double interval);
+  // f += fluid force on every grain of the group, also stored in fluid_force
+  virtual void apply_fluid_force();
+  virtual void grow_fluid_force(int nmax);
+  // called before equal-style variables are evaluated (they read host data)
+  virtual void sync_for_variables() {}
+
+  DarcyFixSettings settings;
+  std::unique_ptr<porewater::DarcySolver> solver;
+  porewater::GridGeom geom;
+  porewater::DepositLayout layout;
+  std::vector<double> deposits;    // this rank's, then (after sum_deposits) everyone's
+  double rho_g[3];                 // rho_f g: the buoyancy term
+  bool gradient_changed;           // solver's gradient changed since the kernels copied it
+  double **fluid_force;            // per-atom array: the last fluid force on each grain
+  int maxatom;
+
+ private:
+  void start_fluid();
+  void advance_fluid();
+  void deposit_and_sum(double interval);
+  void sum_deposits();
+  void update_porosity();
+  double evaluate(const DarcyFixSettings::Value &);
+  bool uses_variables() const;
+  void check_porosity();
+  void check_solution();
+  void write_output();
+  std::string describe_cell(int cell) const;
+
+  bool started;              // the fluid state exists (first setup done, or restarted)
+  bigint last_fluid_step;    // timestep of the last fluid step (or of the first setup)
+  porewater::StepResult last_solve;
+  bool porosity_warned;      // once per run
+  FILE *profile_fp;
+  bigint last_profile_step, last_vtk_step;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
