@@ -120,6 +120,26 @@ void FixWallStress::init()
       error->all(FLERR, "Fix wall/stress: variable {} for stress must be equal-style",
                  stress_var_name);
   }
+  warn_if_damping_unstable();
+}
+
+// The explicit dashpot on a grain is stable only for damping·Δt/m < 2; near that bound the
+// contact chatters, so warn well before it.
+void FixWallStress::warn_if_damping_unstable()
+{
+  if (gamma <= 0.0 || !atom->rmass) return;
+  double mass_min = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) mass_min = std::min(mass_min, atom->rmass[i]);
+  double mass_min_all = mass_min;
+  MPI_Allreduce(&mass_min, &mass_min_all, 1, MPI_DOUBLE, MPI_MIN, world);
+  const double ratio = gamma * update->dt / mass_min_all;
+  if (ratio > 0.5 && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix wall/stress: damping {} with timestep {} and lightest grain mass {} gives "
+                   "damping*dt/m = {:.3g}; the explicit dashpot chatters above ~0.5 and is "
+                   "unstable above 2: lower damping or the timestep",
+                   gamma, update->dt, mass_min_all, ratio);
 }
 
 void FixWallStress::setup(int vflag)

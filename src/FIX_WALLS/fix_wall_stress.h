@@ -28,6 +28,7 @@ class FixWallStress : public Fix {
   void *extract(const char *, int &) override;
 
  protected:
+  void warn_if_damping_unstable();
   // the wall, the same on every rank
   double z_wall, v_wall;
   double wall_force;        // on the wall at the last force evaluation: grain_force − S·L_x·L_y

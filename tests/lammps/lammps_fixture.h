@@ -11,6 +11,7 @@
 #include "modify.h"
 #include "variable.h"
 
+#include <gtest/gtest.h>
 #include <mpi.h>
 
 #include <cstdlib>
@@ -108,6 +109,18 @@ inline double max_abs_diff(const std::map<long, std::vector<double>> &a,
     for (int k = 0; k < 3; k++) worst = std::max(worst, std::abs(u[k] - w[k]));
   }
   return worst;
+}
+
+// `commands` must stop with a LAMMPS error whose message contains `needle`
+inline void expect_error(Lammps &l, const std::string &commands, const std::string &needle)
+{
+  try {
+    l.commands(commands);
+    ADD_FAILURE() << "no error for: " << commands;
+  } catch (std::exception &e) {
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos)
+        << commands << " -> " << e.what();
+  }
 }
 
 // "{}" in `fmt` replaced by `arg`

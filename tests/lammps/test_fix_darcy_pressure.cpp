@@ -19,6 +19,7 @@
 
 using pwtest::Accel;
 using pwtest::Lammps;
+using pwtest::expect_error;
 
 namespace {
 
@@ -473,14 +474,6 @@ TEST(FixDarcyPressure, KokkosEqualsCpu)
 
 TEST(FixDarcyPressure, BadInputGivesClearErrors)
 {
-  auto expect_error = [](Lammps &l, const std::string &cmd, const std::string &needle) {
-    try {
-      l.command(cmd);
-      ADD_FAILURE() << "no error for: " << cmd;
-    } catch (std::exception &e) {
-      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << cmd << " -> " << e.what();
-    }
-  };
   {
     Lammps periodic;
     periodic.commands("units lj\natom_style sphere\nregion box block 0 1 0 1 0 1\ncreate_box 1 box\n");

@@ -14,6 +14,7 @@
 
 using pwtest::Accel;
 using pwtest::Lammps;
+using pwtest::expect_error;
 
 namespace {
 
@@ -289,14 +290,6 @@ TEST(FixNVESphereTY3, MpiMigrationCarriesTheHistory)
 
 TEST(FixNVESphereTY3, BadInputGivesClearErrors)
 {
-  auto expect_error = [](Lammps &l, const std::string &cmd, const std::string &needle) {
-    try {
-      l.command(cmd);
-      ADD_FAILURE() << "no error for: " << cmd;
-    } catch (std::exception &e) {
-      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << cmd << " -> " << e.what();
-    }
-  };
   {
     Lammps l;
     l.commands(pwtest::dense_gas(3));

@@ -12,6 +12,7 @@
 
 using pwtest::Accel;
 using pwtest::Lammps;
+using pwtest::expect_error;
 
 namespace {
 
@@ -241,15 +242,6 @@ TEST(FixWallStress, MpiDecompositionDoesNotChangeTheWall)
 
 namespace {
 
-void expect_error(Lammps &l, const std::string &cmd, const std::string &needle)
-{
-  try {
-    l.commands(cmd);
-    ADD_FAILURE() << "no error for: " << cmd;
-  } catch (std::exception &e) {
-    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << cmd << " -> " << e.what();
-  }
-}
 
 }    // namespace
 

@@ -11,6 +11,7 @@
 
 using pwtest::Accel;
 using pwtest::Lammps;
+using pwtest::expect_error;
 
 namespace {
 
@@ -312,23 +313,14 @@ TEST(PairLinearCoulomb, BadInputGivesClearErrors)
 {
   Lammps l;
   l.commands(pwtest::dense_gas(3));
-  auto expect_error = [&](const std::string &cmd, const std::string &needle) {
-    try {
-      l.command(cmd);
-      ADD_FAILURE() << "no error for: " << cmd;
-    } catch (std::exception &e) {
-      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos)
-          << cmd << " -> " << e.what();
-    }
-  };
-  expect_error("pair_style linear/coulomb lever middle", "lever must be contact or radius");
-  expect_error("pair_style linear/coulomb damping 1", "keyword: damping");
-  expect_error("pair_style linear/coulomb dissipation maybe", "dissipation must be yes or no");
+  expect_error(l, "pair_style linear/coulomb lever middle", "lever must be contact or radius");
+  expect_error(l, "pair_style linear/coulomb damping 1", "keyword: damping");
+  expect_error(l, "pair_style linear/coulomb dissipation maybe", "dissipation must be yes or no");
   l.command("pair_style linear/coulomb");
-  expect_error("pair_coeff * * 1000.0 1000.0", "expected I J kn kt mu");
-  expect_error("pair_coeff * * -1000.0 1000.0 0.5", "kn must be > 0");
-  expect_error("pair_coeff * * 1000.0 -1.0 0.5", "kt must be >= 0");
-  expect_error("pair_coeff * * 1000.0 1000.0 -0.5", "mu must be >= 0");
+  expect_error(l, "pair_coeff * * 1000.0 1000.0", "expected I J kn kt mu");
+  expect_error(l, "pair_coeff * * -1000.0 1000.0 0.5", "kn must be > 0");
+  expect_error(l, "pair_coeff * * 1000.0 -1.0 0.5", "kt must be >= 0");
+  expect_error(l, "pair_coeff * * 1000.0 1000.0 -0.5", "mu must be >= 0");
 }
 
 TEST(PairLinearCoulomb, NeedsAtomStyleSphere)
