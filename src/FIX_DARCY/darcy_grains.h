@@ -30,18 +30,19 @@ struct DepositLayout {
 // x + v*interval, with the stencil's weights s. add(slot, value) accumulates (a plain
 // += on the CPU, an atomic add in a KOKKOS kernel). A grain whose position or velocity
 // is not finite deposits nothing and is counted instead (x - x is NaN for inf and NaN).
+// This overload also returns the stencil of x in idx, w (for fluid_force_from_stencil on
+// the same positions) and whether the grain was finite (idx, w are unset when not).
 template <class Add>
-PW_INLINE void deposit_grain(const GridGeom &g, const DepositLayout &layout, double x0,
+PW_INLINE bool deposit_grain(const GridGeom &g, const DepositLayout &layout, double x0,
                              double x1, double x2, double v0, double v1, double v2,
-                             double volume, double interval, const Add &add)
+                             double volume, double interval, const Add &add, int idx[8],
+                             double w[8])
 {
   const double sum = x0 + x1 + x2 + v0 + v1 + v2;
   if (!(sum - sum == 0.0)) {
     add(layout.nonfinite(), 1.0);
-    return;
+    return false;
   }
-  int idx[8];
-  double w[8];
   stencil(g, x0, x1, x2, idx, w);
   for (int c = 0; c < 8; ++c) {
     const double sv = w[c] * volume;
@@ -50,13 +51,35 @@ PW_INLINE void deposit_grain(const GridGeom &g, const DepositLayout &layout, dou
     add(layout.momentum(idx[c]) + 1, sv * v1);
     add(layout.momentum(idx[c]) + 2, sv * v2);
   }
-  stencil(g, x0 + v0 * interval, x1 + v1 * interval, x2 + v2 * interval, idx, w);
-  for (int c = 0; c < 8; ++c) add(layout.predicted_volume(idx[c]), w[c] * volume);
+  int pidx[8];
+  double pw[8];
+  stencil(g, x0 + v0 * interval, x1 + v1 * interval, x2 + v2 * interval, pidx, pw);
+  for (int c = 0; c < 8; ++c) add(layout.predicted_volume(pidx[c]), pw[c] * volume);
+  return true;
+}
+
+template <class Add>
+PW_INLINE void deposit_grain(const GridGeom &g, const DepositLayout &layout, double x0,
+                             double x1, double x2, double v0, double v1, double v2,
+                             double volume, double interval, const Add &add)
+{
+  int idx[8];
+  double w[8];
+  deposit_grain(g, layout, x0, x1, x2, v0, v1, v2, volume, interval, add, idx, w);
 }
 
 // Fluid force f = -V (grad p + rho_f g) on a grain of volume V at x: grad p interpolated
 // from the cell-centre gradients (interleaved xyz) with the deposition stencil; the
 // second term is buoyancy (rho_g = rho_f g).
+// The same from the grain's stencil (idx, w), e.g. the one deposit_grain returned.
+PW_INLINE void fluid_force_from_stencil(const double *pressure_gradient, const double rho_g[3],
+                                        const int idx[8], const double w[8], double volume,
+                                        double f[3])
+{
+  for (int d = 0; d < 3; ++d)
+    f[d] = -volume * (interpolate(pressure_gradient + d, 3, idx, w) + rho_g[d]);
+}
+
 PW_INLINE void fluid_force(const GridGeom &g, const double *pressure_gradient,
                            const double rho_g[3], double x0, double x1, double x2,
                            double volume, double f[3])
@@ -64,8 +87,7 @@ PW_INLINE void fluid_force(const GridGeom &g, const double *pressure_gradient,
   int idx[8];
   double w[8];
   stencil(g, x0, x1, x2, idx, w);
-  for (int d = 0; d < 3; ++d)
-    f[d] = -volume * (interpolate(pressure_gradient + d, 3, idx, w) + rho_g[d]);
+  fluid_force_from_stencil(pressure_gradient, rho_g, idx, w, volume, f);
 }
 
 }  // namespace porewater

@@ -28,11 +28,24 @@ PW_INLINE int cell_index(const GridGeom &g, int i, int j, int k)
   return i + g.nx * (j + g.ny * k);
 }
 
-// Periodic wrap of a cell index into [0, n).
+// Periodic wrap of a cell index into [0, n). The stencil's indices lie in [-1, n] for
+// grains inside the box: those skip the integer division (same result).
 PW_INLINE int wrap_index(int i, int n)
 {
+  if (i >= 0 && i < n) return i;
+  if (i == -1) return n - 1;
+  if (i == n) return 0;
   const int r = i % n;
   return r < 0 ? r + n : r;
+}
+
+// floor(u) as an int for |u| <= 1e9 (cell_coordinate's range): truncate, then step down
+// for negative non-integers. Equal to (int) floor(u) there, without the libm call (or its
+// SSE2 emulation) that the host build makes of floor.
+PW_INLINE int floor_to_int(double u)
+{
+  const int i = (int) u;
+  return u < (double) i ? i - 1 : i;
 }
 
 // Mirror a layer index at the bottom face (cell -1 -> 0, -2 -> 1) and at the top face
@@ -97,7 +110,7 @@ PW_INLINE void stencil(const GridGeom &g, double x, double y, double z, int idx[
   const double ux = cell_coordinate((x - g.xlo) / g.dx - 0.5);
   const double uy = cell_coordinate((y - g.ylo) / g.dy - 0.5);
   const double uz = cell_coordinate((z - g.zlo) / g.dz - 0.5);
-  const int i0 = (int) floor(ux), j0 = (int) floor(uy), k0 = (int) floor(uz);
+  const int i0 = floor_to_int(ux), j0 = floor_to_int(uy), k0 = floor_to_int(uz);
   const double fx = ux - i0, fy = uy - j0, fz = uz - k0;
   const int ii[2] = {wrap_index(i0, g.nx), wrap_index(i0 + 1, g.nx)};
   const int jj[2] = {wrap_index(j0, g.ny), wrap_index(j0 + 1, g.ny)};

@@ -37,7 +37,7 @@ const int RESTART_HEADER = 14;    // values before the solver state, see write_r
 
 FixDarcyPressure::FixDarcyPressure(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), layout{0}, rho_g{0.0, 0.0, 0.0}, gradient_changed(true),
-    fluid_force(nullptr), maxatom(0), started(false), last_fluid_step(0),
+    fluid_force(nullptr), maxatom(0), stencils_valid(false), stencils_nlocal(0), started(false), last_fluid_step(0),
     last_solve{true, 0, 0.0, 0.0, -1}, porosity_warned(false), profile_fp(nullptr),
     last_profile_step(-1), last_vtk_step(-1)
 {
@@ -220,10 +220,22 @@ void FixDarcyPressure::deposit_grains(double interval)
   const int *mask = atom->mask;
   double *sums = deposits.data();
   const auto add = [sums](int slot, double value) { sums[slot] += value; };
-  for (int i = 0; i < atom->nlocal; ++i)
+  const int nlocal = atom->nlocal;
+  // grows with the atoms, never shrinks: no allocation in a normal step
+  if ((int) stencil_w.size() < 8 * nlocal) {
+    stencil_idx.resize(8 * (size_t) atom->nmax);
+    stencil_w.resize(8 * (size_t) atom->nmax);
+  }
+  int *idx = stencil_idx.data();
+  double *w = stencil_w.data();
+  for (int i = 0; i < nlocal; ++i)
     if (mask[i] & groupbit)
       porewater::deposit_grain(geom, layout, x[i][0], x[i][1], x[i][2], v[i][0], v[i][1], v[i][2],
-                               porewater::sphere_volume(radius[i]), interval, add);
+                               porewater::sphere_volume(radius[i]), interval, add, idx + 8 * i,
+                               w + 8 * i);
+  // a non-finite grain leaves its stencil unset, but deposit_and_sum then stops the run
+  stencils_valid = true;
+  stencils_nlocal = nlocal;
 }
 
 void FixDarcyPressure::apply_fluid_force()
@@ -233,11 +245,20 @@ void FixDarcyPressure::apply_fluid_force()
   const double *radius = atom->radius;
   const int *mask = atom->mask;
   const double *gradient = solver->pressure_gradient().data();
+  // the stencils of deposit_grains when it ran in this step (fluid steps), else computed here
+  const bool cached = stencils_valid && stencils_nlocal == atom->nlocal;
+  stencils_valid = false;
+  const int *idx = stencil_idx.data();
+  const double *w = stencil_w.data();
   for (int i = 0; i < atom->nlocal; ++i) {
     double *ff = fluid_force[i];
     if (mask[i] & groupbit) {
-      porewater::fluid_force(geom, gradient, rho_g, x[i][0], x[i][1], x[i][2],
-                             porewater::sphere_volume(radius[i]), ff);
+      if (cached)
+        porewater::fluid_force_from_stencil(gradient, rho_g, idx + 8 * i, w + 8 * i,
+                                            porewater::sphere_volume(radius[i]), ff);
+      else
+        porewater::fluid_force(geom, gradient, rho_g, x[i][0], x[i][1], x[i][2],
+                               porewater::sphere_volume(radius[i]), ff);
       f[i][0] += ff[0];
       f[i][1] += ff[1];
       f[i][2] += ff[2];
@@ -381,6 +402,7 @@ double FixDarcyPressure::memory_usage()
 {
   // the solver holds about 30 doubles per cell (fields, coefficients, CG work)
   return (double) maxatom * 3 * sizeof(double) +
+      (double) stencil_idx.size() * sizeof(int) + (double) stencil_w.size() * sizeof(double) +
       (double) (deposits.size() + 30 * solver->ncells()) * sizeof(double);
 }
 

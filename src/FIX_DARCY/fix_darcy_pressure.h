@@ -66,6 +66,13 @@ class FixDarcyPressure : public Fix {
   void write_output();
   std::string describe_cell(int cell) const;
 
+  // the stencils of this rank's grains at x from the last deposit_grains (8 cells, weights
+  // per grain), reused by apply_fluid_force in the same step: the positions have not moved
+  std::vector<int> stencil_idx;
+  std::vector<double> stencil_w;
+  bool stencils_valid;
+  int stencils_nlocal;
+
   bool started;              // the fluid state exists (first setup done, or restarted)
   bigint last_fluid_step;    // timestep of the last fluid step (or of the first setup)
   porewater::StepResult last_solve;
