@@ -22,8 +22,8 @@ struct ContactForce {
   double tor[3];    // n × f_t: torque on a grain is −ℓ·tor with its own lever arm ℓ
   double lever_i;   // ℓ_i
   double lever_j;   // ℓ_j
-  double energy;    // elastic energy ½k_n δ² + ½|f_t|²/k_t stored in the contact
-  double dissipated;  // energy taken out of the tangential spring by projection and cap
+  double overlap;       // δ
+  double xisq_before;   // |ξ|² after integration, before projection and cap
 };
 
 // Lever arm of a grain of radius `rad` in a contact of overlap `overlap`.
@@ -116,16 +116,35 @@ PW_INLINE ContactForce linear_coulomb_contact(
   c.tor[0] = rinv * (dely * fs3 - delz * fs2);
   c.tor[1] = rinv * (delz * fs1 - delx * fs3);
   c.tor[2] = rinv * (delx * fs2 - dely * fs1);
-  const double xisq_after = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
-  c.energy = 0.5 * kn * overlap * overlap + 0.5 * kt * xisq_after;
-  c.dissipated = 0.5 * kt * (xisq_before - xisq_after);
+  c.overlap = overlap;
+  c.xisq_before = xisq_before;
   return c;
+}
+
+// Elastic energy stored in a contact: ½k_n δ² + ½k_t|ξ|² (ξ as the contact left it).
+PW_INLINE double contact_energy(const double kn, const double kt, const ContactForce &c,
+                                const double *xi)
+{
+  return 0.5 * kn * c.overlap * c.overlap + 0.5 * kt * (xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
+}
+
+// Energy the tangential spring lost to projection and the Coulomb cap in this contact.
+PW_INLINE double spring_loss(const double kt, const ContactForce &c, const double *xi)
+{
+  return 0.5 * kt * (c.xisq_before - (xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]));
 }
 
 // Energy a spring of history xi loses when its contact opens (MODEL.md: it is forgotten).
 PW_INLINE double opening_loss(const double kt, const double *xi)
 {
   return 0.5 * kt * (xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
+}
+
+// Share of a pair's energy owned here: a pair with a ghost j is computed on both ranks
+// when newton is off.
+PW_INLINE double pair_share(const int j, const int nlocal, const int newton_pair)
+{
+  return (newton_pair || j < nlocal) ? 1.0 : 0.5;
 }
 
 // Mixing of per-type coefficients for I != J: geometric mean, as pair granular does.

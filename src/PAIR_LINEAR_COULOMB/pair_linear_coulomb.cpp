@@ -25,7 +25,7 @@ using porewater::ContactForce;
 
 PairLinearCoulomb::PairLinearCoulomb(LAMMPS *lmp) :
     PairGranHookeHistory(lmp), lever(porewater::LEVER_CONTACT), track_dissipation(0),
-    dissipated(0.0), kn_ij(nullptr), kt_ij(nullptr), mu_ij(nullptr)
+    dissipated(0.0), uniform_coeffs(-1), kn_ij(nullptr), kt_ij(nullptr), mu_ij(nullptr)
 {
   // the base class' global coefficients: no damping anywhere
   kn = kt = gamman = gammat = xmu = 0.0;
@@ -53,6 +53,26 @@ PairLinearCoulomb::~PairLinearCoulomb()
 void PairLinearCoulomb::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  if (uniform_coeffs < 0) uniform_coeffs = coefficients_are_uniform() ? 1 : 0;
+  // one set of coefficients for every type pair (the common case) needs no type lookups
+  if (uniform_coeffs)
+    eval<1>();
+  else
+    eval<0>();
+  pvector[0] = dissipated;
+}
+
+bool PairLinearCoulomb::coefficients_are_uniform() const
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = 1; j <= atom->ntypes; j++)
+      if (kn_ij[i][j] != kn_ij[1][1] || kt_ij[i][j] != kt_ij[1][1] || mu_ij[i][j] != mu_ij[1][1])
+        return false;
+  return true;
+}
+
+template <int UNIFORM> void PairLinearCoulomb::eval()
+{
   const int update_history = update->setupflag ? 0 : 1;
 
   double **x = atom->x;
@@ -71,12 +91,17 @@ void PairLinearCoulomb::compute(int eflag, int vflag)
   int **firstneigh = list->firstneigh;
   int **firsttouch = fix_history->firstflag;
   double **firstxi = fix_history->firstvalue;
+  // locals, not members: stores into f and torque could alias a member double
+  const int lever_mode = lever, tracking = track_dissipation;
+  const double step = dt;
+  double lost = 0.0;
 
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const double xtmp = x[i][0], ytmp = x[i][1], ztmp = x[i][2];
     const double radi = radius[i];
-    const int itype = type[i];
+    const int itype = UNIFORM ? 1 : type[i];
+    const double *kn_row = kn_ij[itype], *kt_row = kt_ij[itype], *mu_row = mu_ij[itype];
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
     int *touch = firsttouch[i];
@@ -92,21 +117,21 @@ void PairLinearCoulomb::compute(int eflag, int vflag)
       const double radsum = radi + radj;
       double *xi = &allxi[3 * jj];
 
-      const int jtype = type[j];
-      // a pair with a ghost j is also computed on j's rank when newton is off
-      const double share = (newton_pair || j < nlocal) ? 1.0 : 0.5;
       if (rsq >= radsum * radsum) {    // an open contact forgets its history
-        if (track_dissipation && touch[jj])
-          dissipated += share * porewater::opening_loss(kt_ij[itype][jtype], xi);
+        if (tracking && touch[jj])
+          lost += porewater::pair_share(j, nlocal, newton_pair) *
+              porewater::opening_loss(kt_row[UNIFORM ? 1 : type[j]], xi);
         touch[jj] = 0;
         xi[0] = xi[1] = xi[2] = 0.0;
         continue;
       }
       touch[jj] = 1;
+      const int jtype = UNIFORM ? 1 : type[j];
       const ContactForce c = porewater::linear_coulomb_contact(
-          delx, dely, delz, rsq, radi, radj, v[i], v[j], omega[i], omega[j], kn_ij[itype][jtype],
-          kt_ij[itype][jtype], mu_ij[itype][jtype], lever, update_history, dt, xi);
-      if (track_dissipation) dissipated += share * c.dissipated;
+          delx, dely, delz, rsq, radi, radj, v[i], v[j], omega[i], omega[j], kn_row[jtype],
+          kt_row[jtype], mu_row[jtype], lever_mode, update_history, step, xi);
+      if (tracking)
+        lost += porewater::pair_share(j, nlocal, newton_pair) * porewater::spring_loss(kt_row[jtype], c, xi);
 
       f[i][0] += c.f[0];
       f[i][1] += c.f[1];
@@ -123,11 +148,12 @@ void PairLinearCoulomb::compute(int eflag, int vflag)
         torque[j][2] -= c.lever_j * c.tor[2];
       }
       if (evflag)
-        ev_tally_xyz(i, j, nlocal, newton_pair, c.energy, 0.0, c.f[0], c.f[1], c.f[2], delx, dely,
-                     delz);
+        ev_tally_xyz(i, j, nlocal, newton_pair,
+                     eflag_either ? porewater::contact_energy(kn_row[jtype], kt_row[jtype], c, xi) : 0.0,
+                     0.0, c.f[0], c.f[1], c.f[2], delx, dely, delz);
     }
   }
-  pvector[0] = dissipated;
+  dissipated += lost;
 }
 
 /* ----------------------------------------------------------------------
@@ -222,6 +248,7 @@ void PairLinearCoulomb::init_style()
   if (!atom->sphere_flag)
     error->all(FLERR, "Pair linear/coulomb requires atom_style sphere (radius, rmass, omega, torque)");
   PairGranHookeHistory::init_style();
+  uniform_coeffs = -1;    // decided at the first compute(), after init_one() mixed them
 }
 
 /* ----------------------------------------------------------------------
@@ -349,7 +376,7 @@ double PairLinearCoulomb::single(int i, int j, int itype, int jtype, double rsq,
   svector[1] = c.ft[1];
   svector[2] = c.ft[2];
   svector[3] = sqrt(c.ft[0] * c.ft[0] + c.ft[1] * c.ft[1] + c.ft[2] * c.ft[2]);
-  return c.energy;
+  return porewater::contact_energy(kn_ij[itype][jtype], kt_ij[itype][jtype], c, xi);
 }
 
 /* ---------------------------------------------------------------------- */

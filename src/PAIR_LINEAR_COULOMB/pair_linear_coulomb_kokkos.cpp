@@ -276,7 +276,7 @@ KOKKOS_INLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
     d_firstxi(i, 3 * jj) = xi[0];
     d_firstxi(i, 3 * jj + 1) = xi[1];
     d_firstxi(i, 3 * jj + 2) = xi[2];
-    if (tally_loss) ev.ecoul += share * c.dissipated;
+    if (tally_loss) ev.ecoul += share * porewater::spring_loss(p.kt, c, xi);
 
     for (int k = 0; k < 3; k++) {
       fi[k] += c.f[k];
@@ -288,7 +288,9 @@ KOKKOS_INLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
         a_torque(j, k) -= c.lever_j * c.tor[k];
       }
     }
-    if (EVFLAG) tally<NEIGHFLAG, NEWTON_PAIR>(ev, i, j, c.energy, c.f, delx, dely, delz);
+    if (EVFLAG)
+      tally<NEIGHFLAG, NEWTON_PAIR>(ev, i, j, porewater::contact_energy(p.kn, p.kt, c, xi), c.f,
+                                    delx, dely, delz);
   }
   for (int k = 0; k < 3; k++) {
     a_f(i, k) += fi[k];
