@@ -19,6 +19,7 @@ if [ ! -x "$CUDA_HOME/bin/nvcc" ]; then
   log "no nvcc in $CUDA_HOME: skipping the CUDA compile check"; exit 0
 fi
 export PATH="$CUDA_HOME/bin:$PATH"
+export CCACHE_DIR=${CCACHE_DIR:-$PW_CACHE/ccache} CCACHE_BASEDIR=$REPO CCACHE_NOHASHDIR=1
 WRAPPER="$LAMMPS_SRC/lib/kokkos/bin/nvcc_wrapper"
 export NVCC_WRAPPER_DEFAULT_COMPILER=${NVCC_WRAPPER_DEFAULT_COMPILER:-g++}
 

@@ -78,6 +78,8 @@ fi
 
 # ---- 3. LAMMPS -------------------------------------------------------------------------
 export CCACHE_DIR=${CCACHE_DIR:-$PW_CACHE/ccache}
+# paths relative to the clone, so a fresh clone elsewhere (CI) still hits the cache
+export CCACHE_BASEDIR=$REPO CCACHE_NOHASHDIR=1
 ccache --max-size=5G >/dev/null
 if [ ! -f "$LAMMPS_BUILD/build.ninja" ]; then
   log "configuring LAMMPS in $LAMMPS_BUILD"
@@ -90,7 +92,7 @@ if [ ! -f "$LAMMPS_BUILD/build.ninja" ]; then
     -D WITH_JPEG=off -D WITH_PNG=off -D WITH_FFMPEG=off >"$PW_CACHE/lammps-configure.log" 2>&1 ||
     { tail -30 "$PW_CACHE/lammps-configure.log"; exit 1; }
 fi
-log "building LAMMPS (cold: ~6 min on 2 cores; warm: seconds)"
+log "building LAMMPS (cold: ~10 min on 2 cores; warm: seconds)"
 cmake --build "$LAMMPS_BUILD" -j "$JOBS" >"$PW_CACHE/lammps-build.log" 2>&1 ||
   { tail -40 "$PW_CACHE/lammps-build.log"; exit 1; }
 cmake --install "$LAMMPS_BUILD" >"$PW_CACHE/lammps-install.log" 2>&1 ||
