@@ -250,16 +250,14 @@ KOKKOS_INLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
     const double rsq = delx * delx + dely * dely + delz * delz;
     const double radj = radius[j];
     const double radsum = radi + radj;
-    const int jtype = type[j];
-    const ContactParams &p = params(itype, jtype);
     // dissipation is tallied on the EV path; ev.ecoul carries it
     const bool tally_loss = EVFLAG && track_dissipation;
-    const double share = (NEWTON_PAIR || j < nlocal) ? 1.0 : 0.5;
     if (rsq >= radsum * radsum) {    // an open contact forgets its history
       if (tally_loss && d_firsttouch(i, jj)) {
         const double xi_open[3] = {d_firstxi(i, 3 * jj), d_firstxi(i, 3 * jj + 1),
                                    d_firstxi(i, 3 * jj + 2)};
-        ev.ecoul += share * porewater::opening_loss(p.kt, xi_open);
+        ev.ecoul += porewater::pair_share(j, nlocal, NEWTON_PAIR) *
+            porewater::opening_loss(params(itype, type[j]).kt, xi_open);
       }
       d_firsttouch(i, jj) = 0;
       d_firstxi(i, 3 * jj) = 0.0;
@@ -268,6 +266,7 @@ KOKKOS_INLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
       continue;
     }
     d_firsttouch(i, jj) = 1;
+    const ContactParams &p = params(itype, type[j]);
     const double vj[3] = {v(j, 0), v(j, 1), v(j, 2)};
     const double wj[3] = {omega(j, 0), omega(j, 1), omega(j, 2)};
     double xi[3] = {d_firstxi(i, 3 * jj), d_firstxi(i, 3 * jj + 1), d_firstxi(i, 3 * jj + 2)};
@@ -276,7 +275,8 @@ KOKKOS_INLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
     d_firstxi(i, 3 * jj) = xi[0];
     d_firstxi(i, 3 * jj + 1) = xi[1];
     d_firstxi(i, 3 * jj + 2) = xi[2];
-    if (tally_loss) ev.ecoul += share * porewater::spring_loss(p.kt, c, xi);
+    if (tally_loss)
+      ev.ecoul += porewater::pair_share(j, nlocal, NEWTON_PAIR) * porewater::spring_loss(p.kt, c, xi);
 
     for (int k = 0; k < 3; k++) {
       fi[k] += c.f[k];
