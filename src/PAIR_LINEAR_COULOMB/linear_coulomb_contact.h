@@ -140,6 +140,14 @@ PW_INLINE double opening_loss(const double kt, const double *xi)
   return 0.5 * kt * (xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
 }
 
+// A contact deeper than `limit` times the smaller radius, or a non-finite one, means the run
+// has blown up (a time step too large for k_n, or NaN positions): never a state to go on from.
+PW_INLINE bool contact_is_broken(const double overlap, const double radi, const double radj,
+                                 const double limit)
+{
+  return !(overlap <= limit * (radi < radj ? radi : radj));    // true for NaN too
+}
+
 // Share of a pair's energy owned here: a pair with a ghost j is computed on both ranks
 // when newton is off.
 PW_INLINE double pair_share(const int j, const int nlocal, const int newton_pair)

@@ -25,7 +25,7 @@ using porewater::ContactForce;
 
 PairLinearCoulomb::PairLinearCoulomb(LAMMPS *lmp) :
     PairGranHookeHistory(lmp), lever(porewater::LEVER_CONTACT), track_dissipation(0),
-    dissipated(0.0), uniform_coeffs(-1), kn_ij(nullptr), kt_ij(nullptr), mu_ij(nullptr)
+    dissipated(0.0), uniform_coeffs(-1), overlap_limit(0.5), kn_ij(nullptr), kt_ij(nullptr), mu_ij(nullptr)
 {
   // the base class' global coefficients: no damping anywhere
   kn = kt = gamman = gammat = xmu = 0.0;
@@ -62,6 +62,17 @@ void PairLinearCoulomb::compute(int eflag, int vflag)
   pvector[0] = dissipated;
 }
 
+void PairLinearCoulomb::broken_contact(int i, int j, double overlap)
+{
+  double **x = atom->x;
+  error->one(FLERR,
+             "Pair linear/coulomb: at step {} grains {} and {} at ({:.6g} {:.6g} {:.6g}) and "
+             "({:.6g} {:.6g} {:.6g}) overlap by {:.6g}, more than overlap_limit {} of the smaller "
+             "radius (or not finite): the time step is too large for kn, or the run has blown up",
+             update->ntimestep, atom->tag[i], atom->tag[j], x[i][0], x[i][1], x[i][2], x[j][0],
+             x[j][1], x[j][2], overlap, overlap_limit);
+}
+
 bool PairLinearCoulomb::coefficients_are_uniform() const
 {
   for (int i = 1; i <= atom->ntypes; i++)
@@ -93,6 +104,7 @@ template <int UNIFORM> void PairLinearCoulomb::eval()
   double **firstxi = fix_history->firstvalue;
   // locals, not members: stores into f and torque could alias a member double
   const int lever_mode = lever, tracking = track_dissipation;
+  const double limit = overlap_limit;
   const double step = dt;
   double lost = 0.0;
 
@@ -130,6 +142,8 @@ template <int UNIFORM> void PairLinearCoulomb::eval()
       const ContactForce c = porewater::linear_coulomb_contact(
           delx, dely, delz, rsq, radi, radj, v[i], v[j], omega[i], omega[j], kn_row[jtype],
           kt_row[jtype], mu_row[jtype], lever_mode, update_history, step, xi);
+      if (porewater::contact_is_broken(c.overlap, radi, radj, limit))
+        broken_contact(i, j, c.overlap);
       if (tracking)
         lost += porewater::pair_share(j, nlocal, newton_pair) * porewater::spring_loss(kt_row[jtype], c, xi);
 
@@ -164,6 +178,7 @@ void PairLinearCoulomb::settings(int narg, char **arg)
 {
   lever = porewater::LEVER_CONTACT;
   track_dissipation = 0;
+  overlap_limit = 0.5;
   int iarg = 0;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "lever") == 0) {
@@ -186,8 +201,17 @@ void PairLinearCoulomb::settings(int narg, char **arg)
         error->all(FLERR, "Illegal pair_style linear/coulomb: dissipation must be yes or no, not {}",
                    arg[iarg + 1]);
       iarg += 2;
+    } else if (strcmp(arg[iarg], "overlap_limit") == 0) {
+      if (iarg + 2 > narg) error->all(FLERR, "Illegal pair_style linear/coulomb: overlap_limit needs a value");
+      overlap_limit = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (overlap_limit <= 0.0 || overlap_limit > 2.0)
+        error->all(FLERR, "Illegal pair_style linear/coulomb: overlap_limit must be in (0, 2], not {}",
+                   overlap_limit);
+      iarg += 2;
     } else {
-      error->all(FLERR, "Illegal pair_style linear/coulomb keyword: {} (allowed: lever, dissipation)",
+      error->all(FLERR,
+                 "Illegal pair_style linear/coulomb keyword: {} (allowed: lever, dissipation, "
+                 "overlap_limit)",
                  arg[iarg]);
     }
   }
@@ -314,6 +338,7 @@ void PairLinearCoulomb::write_restart_settings(FILE *fp)
 {
   fwrite(&lever, sizeof(int), 1, fp);
   fwrite(&track_dissipation, sizeof(int), 1, fp);
+  fwrite(&overlap_limit, sizeof(double), 1, fp);
 }
 
 void PairLinearCoulomb::read_restart_settings(FILE *fp)
@@ -321,9 +346,11 @@ void PairLinearCoulomb::read_restart_settings(FILE *fp)
   if (comm->me == 0) {
     utils::sfread(FLERR, &lever, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &track_dissipation, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &overlap_limit, sizeof(double), 1, fp, nullptr, error);
   }
   MPI_Bcast(&lever, 1, MPI_INT, 0, world);
   MPI_Bcast(&track_dissipation, 1, MPI_INT, 0, world);
+  MPI_Bcast(&overlap_limit, 1, MPI_DOUBLE, 0, world);
 }
 
 void PairLinearCoulomb::write_data(FILE *fp)

@@ -36,9 +36,11 @@ class PairLinearCoulomb : public PairGranHookeHistory {
   int track_dissipation;        // accumulate frictional dissipation into pvector[0]
   double dissipated;            // this rank's share since the pair style was defined
   int uniform_coeffs;           // 1: one kn, kt, mu for all type pairs; -1: not yet known
+  double overlap_limit;         // a deeper contact (fraction of the smaller radius) stops the run
   double **kn_ij, **kt_ij, **mu_ij;   // per type pair, mixed in init_one()
   void allocate_coeffs();
   bool coefficients_are_uniform() const;
+  void broken_contact(int i, int j, double overlap);
   template <int UNIFORM> void eval();
 };
 

@@ -36,7 +36,7 @@ PairLinearCoulombKokkos<DeviceType>::PairLinearCoulombKokkos(LAMMPS *lmp) :
   atomKK = (AtomKokkos *) atom;
   execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
   datamask_read = X_MASK | V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | TYPE_MASK | ENERGY_MASK |
-      VIRIAL_MASK | RADIUS_MASK;
+      VIRIAL_MASK | RADIUS_MASK | TAG_MASK;
   datamask_modify = F_MASK | TORQUE_MASK | ENERGY_MASK | VIRIAL_MASK;
 }
 
@@ -135,7 +135,10 @@ template <class DeviceType> void PairLinearCoulombKokkos<DeviceType>::compute(in
   torque = atomKK->k_torque.view<DeviceType>();
   type = atomKK->k_type.view<DeviceType>();
   radius = atomKK->k_radius.view<DeviceType>();
+  tag = atomKK->k_tag.view<DeviceType>();
   nlocal = atom->nlocal;
+  if (!k_broken.d_view.data()) k_broken = Kokkos::DualView<tagint[2], DeviceType>("pair:broken");
+  d_broken = k_broken.template view<DeviceType>();
   newton_pair = force->newton_pair;
 
   k_params.template sync<DeviceType>();
@@ -181,6 +184,16 @@ template <class DeviceType> void PairLinearCoulombKokkos<DeviceType>::compute(in
     PW_LAUNCH(HALFTHREAD, 0)
   }
 #undef PW_LAUNCH
+
+  // a broken contact found in the kernel stops the run here, naming the grains
+  k_broken.template modify<DeviceType>();
+  k_broken.template sync<LMPHostType>();
+  if (k_broken.h_view(0) != 0)
+    error->one(FLERR,
+               "Pair linear/coulomb/kk: at step {} grains {} and {} overlap by more than "
+               "overlap_limit {} of the smaller radius (or not finite): the time step is too "
+               "large for kn, or the run has blown up",
+               update->ntimestep, k_broken.h_view(0), k_broken.h_view(1), overlap_limit);
 
   if (need_dup) {
     Kokkos::Experimental::contribute(f, dup_f);
@@ -272,6 +285,10 @@ KOKKOS_INLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
     double xi[3] = {d_firstxi(i, 3 * jj), d_firstxi(i, 3 * jj + 1), d_firstxi(i, 3 * jj + 2)};
     const ContactForce c = porewater::linear_coulomb_contact(
         delx, dely, delz, rsq, radi, radj, vi, vj, wi, wj, p.kn, p.kt, p.mu, lever, UPDATE_HISTORY, dt, xi);
+    if (porewater::contact_is_broken(c.overlap, radi, radj, overlap_limit)) {
+      d_broken(0) = tag[i];    // any one broken contact will do for the message
+      d_broken(1) = tag[j];
+    }
     d_firstxi(i, 3 * jj) = xi[0];
     d_firstxi(i, 3 * jj + 1) = xi[1];
     d_firstxi(i, 3 * jj + 2) = xi[2];

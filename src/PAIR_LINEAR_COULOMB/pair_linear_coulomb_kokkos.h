@@ -90,6 +90,9 @@ template <class DeviceType> class PairLinearCoulombKokkos : public PairLinearCou
       params;
 
   int neighflag, newton_pair, nlocal, eflag, vflag;
+  typename AT::t_tagint_1d_randomread tag;
+  Kokkos::DualView<tagint[2], DeviceType> k_broken;    // tags of a broken contact, 0 if none
+  typename Kokkos::DualView<tagint[2], DeviceType>::t_dev d_broken;
   FixNeighHistoryKokkos<DeviceType> *fix_historyKK;
 };
 

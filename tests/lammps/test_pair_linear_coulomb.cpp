@@ -349,3 +349,27 @@ TEST(PairLinearCoulomb, KokkosVariantRefusesNewtonOn)
     EXPECT_NE(std::string(e.what()).find("requires newton off"), std::string::npos) << e.what();
   }
 }
+
+TEST(PairLinearCoulomb, BrokenContactStopsTheRunNamingTheGrains)
+{
+  // grains of radius 0.5 whose centres are 0.4 apart overlap by 1.2 radii: a blown-up state
+  for (Accel accel : {Accel::none, Accel::kokkos}) {
+    Lammps l(accel);
+    l.commands("units lj\natom_style sphere\natom_modify map array\nboundary p p p\n"
+               "newton off on\ncomm_modify vel yes\nregion box block -3 3 -3 3 -3 3\n"
+               "create_box 1 box\ncreate_atoms 1 single 0 0 0 units box\n"
+               "create_atoms 1 single 0.4 0 0 units box\nset type 1 diameter 1.0\n"
+               "set type 1 density 1.9099\npair_style linear/coulomb\n"
+               "pair_coeff * * 1000.0 1000.0 0.5\nfix integrate all nve/sphere\n");
+    expect_error(l, "run 0", "grains 1 and 2");
+  }
+  // the limit is the user's: 1.3 radii lets the same state run
+  Lammps l;
+  l.commands("units lj\natom_style sphere\natom_modify map array\nboundary p p p\n"
+             "comm_modify vel yes\nregion box block -3 3 -3 3 -3 3\ncreate_box 1 box\n"
+             "create_atoms 1 single 0 0 0 units box\ncreate_atoms 1 single 0.4 0 0 units box\n"
+             "set type 1 diameter 1.0\nset type 1 density 1.9099\n"
+             "pair_style linear/coulomb overlap_limit 1.3\npair_coeff * * 1000.0 1000.0 0.5\n");
+  EXPECT_NO_THROW(l.command("run 0"));
+  expect_error(l, "pair_style linear/coulomb overlap_limit 0", "overlap_limit must be in (0, 2]");
+}
