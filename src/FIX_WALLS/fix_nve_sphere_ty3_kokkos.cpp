@@ -42,6 +42,7 @@ template <class DeviceType> struct TY3Grains {
 };
 
 template <class DeviceType> struct TY3Predict : TY3Grains<DeviceType> {
+  explicit TY3Predict(const TY3Grains<DeviceType> &grains) : TY3Grains<DeviceType>(grains) {}
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
     if (!(this->mask(i) & this->groupbit)) return;
@@ -63,6 +64,7 @@ template <class DeviceType> struct TY3Predict : TY3Grains<DeviceType> {
 };
 
 template <class DeviceType> struct TY3Correct : TY3Grains<DeviceType> {
+  explicit TY3Correct(const TY3Grains<DeviceType> &grains) : TY3Grains<DeviceType>(grains) {}
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
     if (!(this->mask(i) & this->groupbit)) return;
@@ -79,6 +81,30 @@ template <class DeviceType> struct TY3Correct : TY3Grains<DeviceType> {
     }
   }
 };
+
+// the grain views and step constants both hooks hand to their kernel
+template <class DeviceType>
+TY3Grains<DeviceType> grain_data(AtomKokkos *atomKK, const DAT::tdual_float_2d &k_history,
+                                 int groupbit, int corrector, double dt, double ftm2v,
+                                 double inertia)
+{
+  TY3Grains<DeviceType> g;
+  g.x = atomKK->k_x.view<DeviceType>();
+  g.v = atomKK->k_v.view<DeviceType>();
+  g.omega = atomKK->k_omega.view<DeviceType>();
+  g.f = atomKK->k_f.view<DeviceType>();
+  g.torque = atomKK->k_torque.view<DeviceType>();
+  g.rmass = atomKK->k_rmass.view<DeviceType>();
+  g.radius = atomKK->k_radius.view<DeviceType>();
+  g.mask = atomKK->k_mask.view<DeviceType>();
+  g.history = k_history.template view<DeviceType>();
+  g.groupbit = groupbit;
+  g.corrector = corrector;
+  g.dt = dt;
+  g.ftm2v = ftm2v;
+  g.inertia = inertia;
+  return g;
+}
 
 }    // namespace
 
@@ -117,21 +143,8 @@ template <class DeviceType> void FixNVESphereTY3Kokkos<DeviceType>::initial_inte
                X_MASK | V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | RMASS_MASK | RADIUS_MASK |
                    MASK_MASK);
   k_history.template sync<DeviceType>();
-  TY3Predict<DeviceType> step;
-  step.x = atomKK->k_x.view<DeviceType>();
-  step.v = atomKK->k_v.view<DeviceType>();
-  step.omega = atomKK->k_omega.view<DeviceType>();
-  step.f = atomKK->k_f.view<DeviceType>();
-  step.torque = atomKK->k_torque.view<DeviceType>();
-  step.rmass = atomKK->k_rmass.view<DeviceType>();
-  step.radius = atomKK->k_radius.view<DeviceType>();
-  step.mask = atomKK->k_mask.view<DeviceType>();
-  step.history = k_history.template view<DeviceType>();
-  step.groupbit = groupbit;
-  step.corrector = corrector;
-  step.dt = update->dt;
-  step.ftm2v = force->ftm2v;
-  step.inertia = INERTIA;
+  const TY3Predict<DeviceType> step(grain_data<DeviceType>(atomKK, k_history, groupbit, corrector,
+                                                          update->dt, force->ftm2v, INERTIA));
   int nlocal = atom->nlocal;
   if (igroup == atom->firstgroup) nlocal = atom->nfirst;
   Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), step);
@@ -145,19 +158,8 @@ template <class DeviceType> void FixNVESphereTY3Kokkos<DeviceType>::final_integr
   atomKK->sync(execution_space,
                V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | RMASS_MASK | RADIUS_MASK | MASK_MASK);
   k_history.template sync<DeviceType>();
-  TY3Correct<DeviceType> step;
-  step.v = atomKK->k_v.view<DeviceType>();
-  step.omega = atomKK->k_omega.view<DeviceType>();
-  step.f = atomKK->k_f.view<DeviceType>();
-  step.torque = atomKK->k_torque.view<DeviceType>();
-  step.rmass = atomKK->k_rmass.view<DeviceType>();
-  step.radius = atomKK->k_radius.view<DeviceType>();
-  step.mask = atomKK->k_mask.view<DeviceType>();
-  step.history = k_history.template view<DeviceType>();
-  step.groupbit = groupbit;
-  step.dt = update->dt;
-  step.ftm2v = force->ftm2v;
-  step.inertia = INERTIA;
+  const TY3Correct<DeviceType> step(grain_data<DeviceType>(atomKK, k_history, groupbit, corrector,
+                                                          update->dt, force->ftm2v, INERTIA));
   int nlocal = atom->nlocal;
   if (igroup == atom->firstgroup) nlocal = atom->nfirst;
   Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), step);

@@ -2,6 +2,10 @@
 #ifndef PW_TEST_FIX_WALLS_INPUTS_H
 #define PW_TEST_FIX_WALLS_INPUTS_H
 
+#include "lammps_fixture.h"
+
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -85,6 +89,17 @@ inline void remove_results(const std::string &name)
   for (const char *ext : {".values", ".dump", ".restart"}) std::remove((name + ext).c_str());
   std::remove(("in." + name).c_str());
   std::remove(("log." + name).c_str());
+}
+
+// A restart-split run (`split`) reproduces the unsplit one (`whole`) bit for bit: every
+// saved value and every position, as printed with 17 digits. Removes both runs' files.
+inline void expect_identical_results(const std::string &whole, const std::string &split,
+                                     const std::string &tag)
+{
+  EXPECT_EQ(read_values(split), read_values(whole)) << tag;
+  EXPECT_EQ(max_abs_diff(read_dump(whole + ".dump"), read_dump(split + ".dump")), 0.0) << tag;
+  remove_results(whole);
+  remove_results(split);
 }
 
 }    // namespace pwtest

@@ -148,16 +148,9 @@ TEST(FixWallStress, RestartSplitRunEqualsUnsplitRun)
                         "check yes\n" +
                         fixes + "run 1500\n" + pwtest::save_results(split, values),
                     accel, split);
-    const auto a = pwtest::read_values(whole), b = pwtest::read_values(split);
-    ASSERT_GT(std::fabs(a[1]), 1e-4) << tag;    // the wall is moving
-    // same operations in the same order: bit for bit, as printed with 17 digits
-    for (int k = 0; k < 4; k++) EXPECT_EQ(b[k], a[k]) << tag << " " << values[k];
-    EXPECT_EQ(pwtest::max_abs_diff(pwtest::read_dump(whole + ".dump"),
-                                   pwtest::read_dump(split + ".dump")),
-              0.0)
-        << tag;
-    pwtest::remove_results(whole);
-    pwtest::remove_results(split);
+    ASSERT_GT(std::fabs(pwtest::read_values(whole)[1]), 1e-4) << tag;    // the wall is moving
+    // same operations in the same order; the displacement carries on from the restart
+    pwtest::expect_identical_results(whole, split, tag);
   }
 }
 
