@@ -29,7 +29,7 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
-const int RESTART_VERSION = 1;
+const int RESTART_VERSION = 2;    // 2: the solver state ends with the fluid balance
 const int RESTART_HEADER = 14;    // values before the solver state, see write_restart()
 }    // namespace
 
@@ -77,7 +77,7 @@ FixDarcyPressure::FixDarcyPressure(LAMMPS *lmp, int narg, char **arg) :
   }
 
   vector_flag = 1;
-  size_vector = 6;
+  size_vector = 10;
   global_freq = 1;
   extvector = 0;
   peratom_flag = 1;
@@ -382,6 +382,14 @@ double FixDarcyPressure::compute_vector(int n)
       return last_solve.residual;
     case 5:
       return solver->p_top();
+    case 6:
+      return solver->balance().residual();
+    case 7:
+      return solver->balance().stored;
+    case 8:
+      return solver->balance().boundary;
+    case 9:
+      return solver->balance().grains;
     default:
       return 0.0;
   }
@@ -430,9 +438,12 @@ void FixDarcyPressure::write_restart(FILE *fp)
 void FixDarcyPressure::restart(char *buf)
 {
   const double *list = (const double *) buf;
-  if ((int) list[0] != RESTART_VERSION)
-    error->all(FLERR, "fix darcy/pressure: restart data of version {}, expected {}", list[0],
-               RESTART_VERSION);
+  const int version = (int) list[0];
+  if (version != RESTART_VERSION && version != 1)
+    error->all(FLERR, "fix darcy/pressure: restart data of version {}, expected 1 or {}",
+               list[0], RESTART_VERSION);
+  // version 1 has no fluid balance (4 values): it restarts from 0
+  const size_t state_size = solver->state().size() - (version == 1 ? 4 : 0);
   const double stored[6] = {list[1], list[2], list[3], list[4], list[5], list[6]};
   const double ours[6] = {geom.xlo, geom.ylo, geom.zlo, geom.dx, geom.dy, geom.dz};
   const double length = std::max({domain->prd[0], domain->prd[1], domain->prd[2]});
@@ -441,7 +452,7 @@ void FixDarcyPressure::restart(char *buf)
   for (int d = 0; d < 6; ++d) same = same && std::fabs(stored[d] - ours[d]) <= 1e-12 * length;
   // the state's size follows from nx, ny, nz, checked above
   if (!same || !solver->set_state(std::vector<double>(
-                   list + RESTART_HEADER, list + RESTART_HEADER + solver->state().size())))
+                   list + RESTART_HEADER, list + RESTART_HEADER + state_size)))
     error->all(FLERR, "fix darcy/pressure: the grid of the restart file ({}x{}x{} cells of "
                "{:.6g} x {:.6g} x {:.6g} from ({:.6g}, {:.6g}, {:.6g})) differs from this "
                "command's", list[RESTART_HEADER], list[RESTART_HEADER + 1],
