@@ -199,7 +199,23 @@ void FixDarcyPressure::deposit_and_sum(double interval)
   const double skipped = deposits[layout.nonfinite()];
   if (skipped > 0.0)
     error->all(FLERR, "fix darcy/pressure: step {}: {} grain(s) of group {} have a non-finite "
-               "position or velocity", update->ntimestep, (bigint) skipped, group->names[igroup]);
+               "position or velocity, the first atom ID {}", update->ntimestep, (bigint) skipped,
+               group->names[igroup], first_nonfinite_grain());
+}
+
+// only on the error path: the smallest ID of a grain of the group with a non-finite x or v
+tagint FixDarcyPressure::first_nonfinite_grain()
+{
+  sync_for_variables();    // the KOKKOS variant: atom data to the host
+  double **x = atom->x, **v = atom->v;
+  tagint first = MAXTAGINT, first_all = MAXTAGINT;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    bool finite = true;
+    for (int d = 0; d < 3; ++d) finite = finite && std::isfinite(x[i][d]) && std::isfinite(v[i][d]);
+    if ((atom->mask[i] & groupbit) && !finite) first = std::min(first, atom->tag[i]);
+  }
+  MPI_Allreduce(&first, &first_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  return first_all;
 }
 
 // MPI_Reduce + MPI_Bcast rather than MPI_Allreduce: the standard does not promise the same
@@ -329,6 +345,11 @@ void FixDarcyPressure::check_solution()
       error->all(FLERR, "fix darcy/pressure: step {}: pressure {} in {} after the fluid step "
                  "(solver residual {}, {} iterations)", update->ntimestep, p[c], describe_cell(c),
                  last_solve.residual, last_solve.iterations);
+  if (!last_solve.converged && !std::isfinite(last_solve.residual))
+    error->all(FLERR, "fix darcy/pressure: step {}: the pressure system is not finite (residual "
+               "{} in {}): a pressure, boundary value or permeability overflowed",
+               update->ntimestep, last_solve.residual,
+               last_solve.worst_cell >= 0 ? describe_cell(last_solve.worst_cell) : "no cell");
   if (!last_solve.converged)
     error->all(FLERR, "fix darcy/pressure: step {}: the pressure solve did not converge in {} "
                "iterations: residual {:.4g} > tolerance {:.4g}, largest in {}; raise maxiter or "
