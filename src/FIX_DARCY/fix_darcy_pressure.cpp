@@ -77,7 +77,7 @@ FixDarcyPressure::FixDarcyPressure(LAMMPS *lmp, int narg, char **arg) :
   }
 
   vector_flag = 1;
-  size_vector = 10;
+  size_vector = 11;
   global_freq = 1;
   extvector = 0;
   peratom_flag = 1;
@@ -411,6 +411,8 @@ double FixDarcyPressure::compute_vector(int n)
       return solver->balance().boundary;
     case 9:
       return solver->balance().grains;
+    case 10:
+      return solver->balance().allowance;
     default:
       return 0.0;
   }
