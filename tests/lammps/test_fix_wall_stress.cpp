@@ -268,6 +268,10 @@ TEST(FixWallStress, BadInputGivesClearErrors)
     expect_error(l, fix + "z 8 stress -1 mass 6 kn 100\nrun 300", "above the box top 10");
     l.command("unfix w");
     expect_error(l, fix + "z 1 stress 1 mass 6 kn 100\nrun 300", "below the box bottom 0");
+    l.command("unfix w");
+    // a stress that overflows makes the wall's velocity infinite in the first step
+    expect_error(l, "reset_timestep 0\nvariable inf equal 1e308*10\n" + fix + "z 8 stress v_inf mass 6 kn 100\nrun 10",
+                 "the wall ran away at step 1: z = -inf, v = -inf");
   }
   {
     Lammps l;
