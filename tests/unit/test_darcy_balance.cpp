@@ -162,7 +162,7 @@ TEST(DarcyBalance, CrankNicolsonStaysBoundedForExtremePermeabilityAndStiffFluid)
   // sqrt(E0 / min(beta phi V)) = p0 sqrt(N_cells / (phi_min/phi_max)). The maximum
   // principle |p| <= p0 holds only for small x: CN overshoots there, and we report by how
   // much. k_c spans 6 decades and beta 1 and 1e-8 (stiff) at dt 1 (every N large):
-  // D dt/dz^2 goes from ~1e-3 to ~1e13.
+  // D dt/dz^2 goes from ~1e-5 to ~4e10 (D = k/(beta phi mu), phi in [0.3, 0.6]).
   const GridGeom g{0, 0, 0, 0.1, 0.1, 0.1, 4, 4, 8};
   const double p0 = 1.0;
   double worst_ratio = 0.0, worst_overshoot = 0.0;
