@@ -168,6 +168,7 @@ StepResult DarcySolver::step(double dt, double p_top, double z_top, double p_bot
   apply_operator(pressure_.data(), 0.5 * (p_top_ + p_top), 0.5 * (p_bottom_old + p_bottom),
                  residual_.data());
   const double *phi = porosity_.data();
+  double source_sum = 0.0, diag_sum = 0.0;  // for the balance: sum of the two per cell
   for (int kz = 0; kz < active_layers_; ++kz)
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i) {
@@ -183,11 +184,14 @@ StepResult DarcySolver::step(double dt, double p_top, double z_top, double p_bot
         const double *v = &mean_velocity_[3 * c];
         const double material_dphi =
             dphi_dt_[c] + v[0] * grad_phi[0] + v[1] * grad_phi[1] + v[2] * grad_phi[2];
-        residual_[c] -= mu * material_dphi / (1.0 - phi[c]);  // row scaled by beta phi mu
+        const double source = -material_dphi / (1.0 - phi[c]);
+        residual_[c] += mu * source;  // row scaled by beta phi mu
+        source_sum += source;
         capacity_[c] = beta * phi[c] * mu / dt;
         const double faces = coef_x_[c] + coef_x_[xm] + coef_y_[c] + coef_y_[ym] + coef_z_[c] +
             (kz > 0 ? coef_z_[c - nxy_] : coef_bottom_[c]);
         diag_[c] = capacity_[c] + 0.5 * faces;
+        diag_sum += diag_[c];
       }
   std::fill(update_.begin(), update_.begin() + m, 0.0);
 
@@ -239,6 +243,8 @@ StepResult DarcySolver::step(double dt, double p_top, double z_top, double p_bot
     }
   }
 
+  add_to_balance(dt, 0.5 * (p_top_ + p_top), 0.5 * (p_bottom_old + p_bottom), source_sum,
+                 diag_sum * result.tolerance);
   // keep the best iterate even when not converged; the caller decides what to do
   for (int c = 0; c < m; ++c) pressure_[c] += update_[c];
   for (int c = m; c < ncells_; ++c) pressure_[c] = p_top;
@@ -246,6 +252,27 @@ StepResult DarcySolver::step(double dt, double p_top, double z_top, double p_bot
   p_bottom_ = p_bottom_new;
   update_pressure_gradient();
   return result;
+}
+
+// Before p += dp: the terms of each row times V_cell dt/mu (see FluidBalance), with the
+// Crank-Nicolson face values p_face (means of old and new) and p_c + dp/2.
+void DarcySolver::add_to_balance(double dt, double p_top_mean, double p_bottom_mean,
+                                 double source_sum, double diag_tolerance_sum)
+{
+  const double volume = cell_volume(geom_), beta = params_.compressibility;
+  const int m = active_layers_ * nxy_, top_layer = (active_layers_ - 1) * nxy_;
+  double stored = 0.0, inflow = 0.0;
+  for (int c = 0; c < m; ++c) stored += beta * porosity_[c] * update_[c];
+  auto mean_p = [&](int c) { return pressure_[c] + 0.5 * update_[c]; };
+  if (active_layers_ > 0)
+    for (int c = 0; c < nxy_; ++c)  // coefficients are 0 at a no-flow face
+      inflow += coef_z_[top_layer + c] * (p_top_mean - mean_p(top_layer + c)) +
+          coef_bottom_[c] * (p_bottom_mean - mean_p(c));
+  const double scale = volume * dt / params_.viscosity;
+  balance_.stored += volume * stored;
+  balance_.boundary += scale * inflow;
+  balance_.grains += volume * dt * source_sum;
+  balance_.allowance += scale * diag_tolerance_sum;
 }
 
 // ---------------------------------------------------------------- pressure gradient
@@ -307,13 +334,15 @@ std::vector<double> DarcySolver::state() const
                            p_bottom_};
   s.insert(s.end(), pressure_.begin(), pressure_.end());
   s.insert(s.end(), porosity_.begin(), porosity_.end());
+  s.insert(s.end(), {balance_.stored, balance_.boundary, balance_.grains, balance_.allowance});
   return s;
 }
 
 bool DarcySolver::set_state(const std::vector<double> &s)
 {
-  const size_t header = 7;
-  if (s.size() != header + 2 * size_t(ncells_) || int(s[0]) != geom_.nx ||
+  const size_t header = 7, fields_end = header + 2 * size_t(ncells_);
+  const bool with_balance = s.size() == fields_end + 4;
+  if ((s.size() != fields_end && !with_balance) || int(s[0]) != geom_.nx ||
       int(s[1]) != geom_.ny || int(s[2]) != geom_.nz)
     return false;
   porosity_updates_ = int(s[3]);
@@ -321,7 +350,10 @@ bool DarcySolver::set_state(const std::vector<double> &s)
   active_layers_ = std::max(0, std::min(geom_.nz, int(s[5])));
   p_bottom_ = s[6];
   std::copy(s.begin() + header, s.begin() + header + ncells_, pressure_.begin());
-  std::copy(s.begin() + header + ncells_, s.end(), porosity_.begin());
+  std::copy(s.begin() + header + ncells_, s.begin() + fields_end, porosity_.begin());
+  balance_ = FluidBalance();
+  if (with_balance)
+    balance_ = FluidBalance{s[fields_end], s[fields_end + 1], s[fields_end + 2], s[fields_end + 3]};
   update_permeability();
   update_pressure_gradient();
   return true;

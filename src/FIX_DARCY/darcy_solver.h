@@ -43,6 +43,20 @@ struct StepResult {
   int worst_cell;   // flat index of that largest (or first non-finite) |r_i / A_ii|, -1 if none
 };
 
+// Fluid volume balance of the discrete equations, summed over the steps since the solver
+// was made (kept in the restart state). Each step, multiplying row c by V_cell dt/mu gives
+//   beta phi_c dp_c V = dt (inflow through c's Dirichlet faces) + dt (grain source of c)
+// exactly (interior face fluxes cancel in pairs), up to the linear solve's residual.
+// Volume units: beta p V is the volume the fluid gained by compression.
+struct FluidBalance {
+  double stored = 0.0;     // sum of beta phi dp V_cell over the active cells of each step
+  double boundary = 0.0;   // dt (k_f/mu) (mean p_face - mean p_c)/(dz/2) A over Dirichlet faces
+  double grains = 0.0;     // -dt sum (dphi/dt + vbar.grad phi)/(1-phi) V_cell
+  double allowance = 0.0;  // what the solve tolerance lets |residual| reach: sum over steps
+                           // of tolerance * V dt/mu sum_c A_cc (row c's |r_c| <= A_cc tol)
+  double residual() const { return stored - boundary - grains; }
+};
+
 class DarcySolver {
  public:
   DarcySolver(const GridGeom &geom, const DarcyParams &params);
@@ -93,6 +107,7 @@ class DarcySolver {
   double p_top() const { return p_top_; }
   double p_bottom() const { return p_bottom_; }
   int active_layers() const { return active_layers_; }
+  const FluidBalance &balance() const { return balance_; }
 
   // Set p (initial value) together with the top pressure at this time, which the next
   // Crank-Nicolson step uses as its old boundary value.
@@ -104,8 +119,10 @@ class DarcySolver {
   void gradient_at(double x, double y, double z, double grad[3]) const;
 
   // ---- restart: [nx, ny, nz, porosity_updates, p_top, active_layers, p_bottom,
-  // p(ncells), phi(ncells)], phi being that of the last update_porosity (it becomes phi(t-dt) of
-  // the next central difference). set_state returns false on a grid mismatch.
+  // p(ncells), phi(ncells), balance (stored, boundary, grains, allowance)], phi being that
+  // of the last update_porosity (it becomes phi(t-dt) of the next central difference).
+  // set_state also takes a state without the balance (older restarts: balance from 0);
+  // it returns false on a grid mismatch.
   std::vector<double> state() const;
   bool set_state(const std::vector<double> &state);
 
@@ -118,6 +135,8 @@ class DarcySolver {
   void porosity_from_deposits(std::vector<double> &out) const;
   void update_permeability();
   void update_pressure_gradient();
+  void add_to_balance(double dt, double p_top_mean, double p_bottom_mean, double source_sum,
+                      double diag_tolerance_sum);
 
   GridGeom geom_;
   DarcyParams params_;
@@ -131,6 +150,7 @@ class DarcySolver {
   std::vector<double> pressure_, porosity_, porosity_previous_, porosity_next_, permeability_;
   std::vector<double> mean_velocity_, dphi_dt_, pressure_gradient_;
   double porosity_min_unclamped_ = 1.0, porosity_max_unclamped_ = 1.0;
+  FluidBalance balance_;
 
   // per step: face coefficients k_f/Delta^2 on the +x, +y, +z face of each cell (for the
   // top active layer the Dirichlet half-cell face, 2k/dz^2), the bottom face (2k/dz^2

@@ -29,7 +29,7 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
-const int RESTART_VERSION = 1;
+const int RESTART_VERSION = 2;    // 2: the solver state ends with the fluid balance
 const int RESTART_HEADER = 14;    // values before the solver state, see write_restart()
 }    // namespace
 
@@ -77,7 +77,7 @@ FixDarcyPressure::FixDarcyPressure(LAMMPS *lmp, int narg, char **arg) :
   }
 
   vector_flag = 1;
-  size_vector = 6;
+  size_vector = 11;
   global_freq = 1;
   extvector = 0;
   peratom_flag = 1;
@@ -199,7 +199,23 @@ void FixDarcyPressure::deposit_and_sum(double interval)
   const double skipped = deposits[layout.nonfinite()];
   if (skipped > 0.0)
     error->all(FLERR, "fix darcy/pressure: step {}: {} grain(s) of group {} have a non-finite "
-               "position or velocity", update->ntimestep, (bigint) skipped, group->names[igroup]);
+               "position or velocity, the first atom ID {}", update->ntimestep, (bigint) skipped,
+               group->names[igroup], first_nonfinite_grain());
+}
+
+// only on the error path: the smallest ID of a grain of the group with a non-finite x or v
+tagint FixDarcyPressure::first_nonfinite_grain()
+{
+  sync_for_variables();    // the KOKKOS variant: atom data to the host
+  double **x = atom->x, **v = atom->v;
+  tagint first = MAXTAGINT, first_all = MAXTAGINT;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    bool finite = true;
+    for (int d = 0; d < 3; ++d) finite = finite && std::isfinite(x[i][d]) && std::isfinite(v[i][d]);
+    if ((atom->mask[i] & groupbit) && !finite) first = std::min(first, atom->tag[i]);
+  }
+  MPI_Allreduce(&first, &first_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  return first_all;
 }
 
 // MPI_Reduce + MPI_Bcast rather than MPI_Allreduce: the standard does not promise the same
@@ -329,6 +345,11 @@ void FixDarcyPressure::check_solution()
       error->all(FLERR, "fix darcy/pressure: step {}: pressure {} in {} after the fluid step "
                  "(solver residual {}, {} iterations)", update->ntimestep, p[c], describe_cell(c),
                  last_solve.residual, last_solve.iterations);
+  if (!last_solve.converged && !std::isfinite(last_solve.residual))
+    error->all(FLERR, "fix darcy/pressure: step {}: the pressure system is not finite (residual "
+               "{} in {}): a pressure, boundary value or permeability overflowed",
+               update->ntimestep, last_solve.residual,
+               last_solve.worst_cell >= 0 ? describe_cell(last_solve.worst_cell) : "no cell");
   if (!last_solve.converged)
     error->all(FLERR, "fix darcy/pressure: step {}: the pressure solve did not converge in {} "
                "iterations: residual {:.4g} > tolerance {:.4g}, largest in {}; raise maxiter or "
@@ -382,6 +403,16 @@ double FixDarcyPressure::compute_vector(int n)
       return last_solve.residual;
     case 5:
       return solver->p_top();
+    case 6:
+      return solver->balance().residual();
+    case 7:
+      return solver->balance().stored;
+    case 8:
+      return solver->balance().boundary;
+    case 9:
+      return solver->balance().grains;
+    case 10:
+      return solver->balance().allowance;
     default:
       return 0.0;
   }
@@ -430,9 +461,12 @@ void FixDarcyPressure::write_restart(FILE *fp)
 void FixDarcyPressure::restart(char *buf)
 {
   const double *list = (const double *) buf;
-  if ((int) list[0] != RESTART_VERSION)
-    error->all(FLERR, "fix darcy/pressure: restart data of version {}, expected {}", list[0],
-               RESTART_VERSION);
+  const int version = (int) list[0];
+  if (version != RESTART_VERSION && version != 1)
+    error->all(FLERR, "fix darcy/pressure: restart data of version {}, expected 1 or {}",
+               list[0], RESTART_VERSION);
+  // version 1 has no fluid balance (4 values): it restarts from 0
+  const size_t state_size = solver->state().size() - (version == 1 ? 4 : 0);
   const double stored[6] = {list[1], list[2], list[3], list[4], list[5], list[6]};
   const double ours[6] = {geom.xlo, geom.ylo, geom.zlo, geom.dx, geom.dy, geom.dz};
   const double length = std::max({domain->prd[0], domain->prd[1], domain->prd[2]});
@@ -441,7 +475,7 @@ void FixDarcyPressure::restart(char *buf)
   for (int d = 0; d < 6; ++d) same = same && std::fabs(stored[d] - ours[d]) <= 1e-12 * length;
   // the state's size follows from nx, ny, nz, checked above
   if (!same || !solver->set_state(std::vector<double>(
-                   list + RESTART_HEADER, list + RESTART_HEADER + solver->state().size())))
+                   list + RESTART_HEADER, list + RESTART_HEADER + state_size)))
     error->all(FLERR, "fix darcy/pressure: the grid of the restart file ({}x{}x{} cells of "
                "{:.6g} x {:.6g} x {:.6g} from ({:.6g}, {:.6g}, {:.6g})) differs from this "
                "command's", list[RESTART_HEADER], list[RESTART_HEADER + 1],

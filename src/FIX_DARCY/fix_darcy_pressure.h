@@ -61,6 +61,7 @@ class FixDarcyPressure : public Fix {
   void update_porosity();
   double evaluate(const DarcyFixSettings::Value &);
   bool uses_variables() const;
+  tagint first_nonfinite_grain();
   void check_porosity();
   void check_solution();
   void write_output();

@@ -128,8 +128,10 @@ DarcyFixSettings LAMMPS_NS::parse_darcy_fix_settings(LAMMPS *lmp, int narg, char
       have_kc = true;
       i += 2;
     } else if (key == "top") {
-      read.need(i, 1, "top P or top v_name");
-      s.top = read.value(i + 1, "top", "a pressure or v_name");
+      read.need(i, 1, "top noflow, top P or top v_name");
+      s.top_dirichlet = std::string(arg[i + 1]) != "noflow";
+      s.top = DarcyFixSettings::Value();    // noflow: 0, the value cells above ztop hold
+      if (s.top_dirichlet) s.top = read.value(i + 1, "top", "noflow, a pressure or v_name");
       i += 2;
     } else if (key == "ztop") {
       read.need(i, 1, "ztop Z or ztop v_name");
@@ -208,6 +210,7 @@ DarcyFixSettings LAMMPS_NS::parse_darcy_fix_settings(LAMMPS *lmp, int narg, char
                lmp->domain->boxlo[2], s.zhi);
   s.params.bottom = s.bottom_dirichlet ? porewater::DarcyParams::Bottom::Dirichlet
                                        : porewater::DarcyParams::Bottom::NoFlow;
-  s.params.top = porewater::DarcyParams::Top::Dirichlet;
+  s.params.top = s.top_dirichlet ? porewater::DarcyParams::Top::Dirichlet
+                                 : porewater::DarcyParams::Top::NoFlow;
   return s;
 }

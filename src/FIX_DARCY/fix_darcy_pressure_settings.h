@@ -28,7 +28,8 @@ struct DarcyFixSettings {
   double density = 0.0;              // rho_f
   double gravity[3] = {0.0, 0.0, 0.0};
   bool gravity_given = false;
-  Value top;                         // Dirichlet top pressure (default 0)
+  Value top;                         // Dirichlet top pressure (default 0), if top_dirichlet
+  bool top_dirichlet = true;         // false: top noflow, a closed box
   Value z_top;                       // where it sits (default: grid top)
   bool z_top_given = false;
   Value bottom;                      // Dirichlet bottom pressure, if bottom_dirichlet

@@ -492,6 +492,7 @@ TEST(FixDarcyPressure, BadInputGivesClearErrors)
                "grid, viscosity, compressibility, density and permeability are required");
   expect_error(l, fix + unit_diffusivity + " porosity 0.2 1.0", "porosity MIN MAX needs 0 < MIN <= MAX < 1");
   expect_error(l, fix + unit_diffusivity + " bottom closed", "bottom expects noflow, a pressure or v_name, got 'closed'");
+  expect_error(l, fix + unit_diffusivity + " top closed", "top expects noflow, a pressure or v_name, got 'closed'");
   expect_error(l, fix + unit_diffusivity + " every 0", "every expects an integer >= 1, got '0'");
   expect_error(l, fix + unit_diffusivity + " viscosity -1", "viscosity must be > 0");
   expect_error(l, fix + unit_diffusivity + " gravity 0 0", "expected gravity gx gy gz");

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -267,6 +268,10 @@ TEST(FixWallStress, BadInputGivesClearErrors)
     expect_error(l, fix + "z 8 stress -1 mass 6 kn 100\nrun 300", "above the box top 10");
     l.command("unfix w");
     expect_error(l, fix + "z 1 stress 1 mass 6 kn 100\nrun 300", "below the box bottom 0");
+    l.command("unfix w");
+    // a stress that overflows makes the wall's velocity infinite in the first step
+    expect_error(l, "reset_timestep 0\nvariable inf equal 1e308*10\n" + fix + "z 8 stress v_inf mass 6 kn 100\nrun 10",
+                 "the wall ran away at step 1: z = -inf, v = -inf");
   }
   {
     Lammps l;
@@ -291,5 +296,42 @@ TEST(FixWallStress, WallLeavingTheBoxNamesTheStep)
     EXPECT_TRUE(msg.find("at step 200,") != std::string::npos ||
                 msg.find("at step 201,") != std::string::npos)
         << msg;
+  }
+}
+
+TEST(FixWallStress, TidalStressNearZeroKeepsThePlateBoundedAndNegativeIsCaught)
+{
+  // N -> 0: S = 10 - A sin^2(pi t / 2.5) over one tidal period. With A = 0.999 S0 the bed
+  // is almost unloaded at t = 1.25 (S = 0.01). Quasi-statically z = 4 - 4 S/kn <= 4 (the
+  // free stack top), and the plate moves at most at v = 4 A pi/(2.5 kn) = 5.0e-3; lifted
+  // off at that speed under the smallest stress it rises at most v^2 M / (2 S_min L_x L_y)
+  // = 1.26e-3. Downward, a load applied at once overshoots at most twice the static
+  // compression 4 S0/kn = 4e-3.
+  const double A = 9.99, S_min = STACK_STRESS - A;
+  const double v_max = 4.0 * A * std::acos(-1.0) / (2.5 * STACK_KN);
+  const double rise = v_max * v_max * 9.0 / (2.0 * S_min * 9.0);
+  {
+    Lammps l;
+    l.command("variable s equal 10-9.99*sin(PI*step*dt/2.5)^2");
+    loaded_stack(l, "v_s");
+    double z_max = -1.0, z_min = 1e9;
+    for (int n = 0; n < 50; n++) {    // 5000 steps of 5e-4: one period
+      l.command("run 100");
+      const double z = l.equal("f_w[1]");
+      ASSERT_TRUE(std::isfinite(z) && std::isfinite(l.equal("f_w[2]")));
+      z_max = std::max(z_max, z);
+      z_min = std::min(z_min, z);
+    }
+    std::printf("[ report ] S down to %.3g: plate z in [%.6f, %.6f], bounds [%.6f, %.6f]\n",
+                S_min, z_min, z_max, 4.0 - 8.0 * STACK_STRESS / STACK_KN, 4.0 + rise);
+    EXPECT_LE(z_max, 4.0 + rise);
+    EXPECT_GE(z_min, 4.0 - 8.0 * STACK_STRESS / STACK_KN);
+  }
+  {
+    // A = 3 S0: S = -20 pulls the plate off the bed and out of the box, which stops the run
+    Lammps l;
+    l.command("variable s equal 10-30*sin(PI*step*dt/2.5)^2");
+    loaded_stack(l, "v_s");
+    expect_error(l, "run 5000", "above the box top 8");
   }
 }
