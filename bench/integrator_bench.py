@@ -7,7 +7,7 @@ eps = dt*sqrt(kn/m). Writes integrator_*.png and integrator_results.md into --ou
 (default: this folder); bench/RESULTS_integrators.md discusses them. Usage:
     source scripts/env.sh && nice /usr/bin/python3 bench/integrator_bench.py [--quick]
 """
-import argparse, math, os, re, statistics, subprocess, sys, tempfile
+import argparse, math, os, re, shutil, statistics, subprocess, sys, tempfile
 
 import numpy as np
 
@@ -360,6 +360,7 @@ def main():
     with open(os.path.join(args.out, "integrator_results.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     print("\n".join(md))
+    shutil.rmtree(WORK)
 
 
 if __name__ == "__main__":
