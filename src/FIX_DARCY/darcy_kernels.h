@@ -107,13 +107,24 @@ struct StencilBase {
   double fx, fy, fz;
 };
 
-PW_INLINE StencilBase stencil_base(const GridGeom &g, double x, double y, double z)
+// The map of stencil_base from points to the lattice: origin and reciprocal spacings
+// (a loop over grains builds it once rather than dividing per grain).
+struct LatticeMap {
+  double xlo, ylo, zlo;
+  double inv_dx, inv_dy, inv_dz;
+};
+
+PW_INLINE LatticeMap lattice_map(const GridGeom &g)
 {
-  // position in units of cells from centre 0; times the reciprocal, which a loop over
-  // grains computes once, rather than a division per grain
-  const double ux = cell_coordinate((x - g.xlo) * (1.0 / g.dx) - 0.5);
-  const double uy = cell_coordinate((y - g.ylo) * (1.0 / g.dy) - 0.5);
-  const double uz = cell_coordinate((z - g.zlo) * (1.0 / g.dz) - 0.5);
+  return LatticeMap{g.xlo, g.ylo, g.zlo, 1.0 / g.dx, 1.0 / g.dy, 1.0 / g.dz};
+}
+
+PW_INLINE StencilBase stencil_base(const LatticeMap &m, double x, double y, double z)
+{
+  // position in units of cells from centre 0
+  const double ux = cell_coordinate((x - m.xlo) * m.inv_dx - 0.5);
+  const double uy = cell_coordinate((y - m.ylo) * m.inv_dy - 0.5);
+  const double uz = cell_coordinate((z - m.zlo) * m.inv_dz - 0.5);
   StencilBase b;
   b.i0 = floor_to_int(ux);
   b.j0 = floor_to_int(uy);
@@ -122,6 +133,11 @@ PW_INLINE StencilBase stencil_base(const GridGeom &g, double x, double y, double
   b.fy = uy - b.j0;
   b.fz = uz - b.k0;
   return b;
+}
+
+PW_INLINE StencilBase stencil_base(const GridGeom &g, double x, double y, double z)
+{
+  return stencil_base(lattice_map(g), x, y, z);
 }
 
 // Trilinear weights of the 8 corners c = a + 2b + 4e, (i0+a, j0+b, k0+e), of the base's

@@ -231,8 +231,9 @@ void FixDarcyPressure::deposit_grains(double interval)
   const auto add_to_cell = [sums](int slot, double value) { sums[slot] += value; };
   std::fill(block_deposits.begin(), block_deposits.end(), 0.0);
   double *block_sums = block_deposits.data();
-  // local copies: the compiler may then keep them (and 1/dx) in registers across the stores
+  // local copies: the compiler may then keep them in registers across the stores
   const porewater::GridGeom g = geom;
+  const porewater::LatticeMap map = porewater::lattice_map(geom);
   const porewater::StencilBlocks grid_blocks = blocks;
   const porewater::DepositLayout slots = layout;
   const int nlocal = atom->nlocal, bit = groupbit;
@@ -253,9 +254,9 @@ void FixDarcyPressure::deposit_grains(double interval)
       continue;
     }
     const double volume = porewater::sphere_volume(radius[i]);
-    const porewater::StencilBase at = porewater::stencil_base(g, x0, x1, x2);
+    const porewater::StencilBase at = porewater::stencil_base(map, x0, x1, x2);
     const porewater::StencilBase ahead = porewater::stencil_base(
-        g, x0 + v0 * interval, x1 + v1 * interval, x2 + v2 * interval);
+        map, x0 + v0 * interval, x1 + v1 * interval, x2 + v2 * interval);
     const int block = grid_blocks.block(at), block_ahead = grid_blocks.block(ahead);
     if (block < 0 || block_ahead < 0) {
       porewater::deposit_grain(g, slots, x0, x1, x2, v0, v1, v2, volume, interval,
@@ -316,6 +317,7 @@ void FixDarcyPressure::apply_fluid_force()
   const double *corner_gradients = block_gradient.data();
   const double buoyancy[3] = {rho_g[0], rho_g[1], rho_g[2]};
   const porewater::GridGeom g = geom;    // local copies, as in deposit_grains
+  const porewater::LatticeMap map = porewater::lattice_map(geom);
   const porewater::StencilBlocks grid_blocks = blocks;
   const int nlocal = atom->nlocal, bit = groupbit;
   // the stencils deposit_grains stored if it ran in this step (a fluid step), else new ones
@@ -337,7 +339,7 @@ void FixDarcyPressure::apply_fluid_force()
       block = stored_block[i];
       weights = stored_weights + 8 * i;
     } else {
-      const porewater::StencilBase at = porewater::stencil_base(g, x[i][0], x[i][1], x[i][2]);
+      const porewater::StencilBase at = porewater::stencil_base(map, x[i][0], x[i][1], x[i][2]);
       block = grid_blocks.block(at);
       porewater::corner_weights(at, w);
     }
