@@ -208,7 +208,7 @@ def share(plugins, repeat, steps, workdir):
         print(f"share: repeat {r + 1}/{repeat} done", flush=True)
     med = {i: tuple(statistics.median(x[k] for x in res[i]) for k in range(3)) for i in res}
     lines = [f"{steps} steps, median of {repeat} interleaved repeats, 1 MPI rank; loop CPU time.", "",
-             "| scene | plugin | fix | loop CPU (s) | ms/step | Pair (s) | Modify (s) | fix share |",
+             "| scene | plugin | fix | loop CPU (s) | CPU ms/step | Pair wall (s) | Modify wall (s) | fix share |",
              "|---|---|---|---|---|---|---|---|"]
     summary = {}
     for i, (scene, infile, label, plugin, var) in enumerate(configs):
