@@ -93,7 +93,7 @@ PW_INLINE double clamp_porosity(double porosity, double porosity_min, double por
 
 // u kept within +-1e9 (NaN to -1e9) so that stencil's int casts are defined for any
 // input; callers that care check finiteness themselves. Comparisons, not fmin/fmax:
-// those stay library calls without -ffinite-math-only; these two map onto maxsd/minsd.
+// those stay library calls without -ffinite-math-only.
 PW_INLINE double cell_coordinate(double u)
 {
   const double above = u > -1e9 ? u : -1e9;
