@@ -13,9 +13,15 @@ Part 1 (accuracy): grain-free runs of bench/in.darcy_accuracy through lmp + the 
       p = Im[cosh(kappa z)/cosh(kappa H) e^{i omega t}], kappa = sqrt(i omega / D)
       error = max over 16 (8 at n < 192) profiles in the third period and the layers
   Errors are relative to the pressure scale (1). Time: LAMMPS' loop time (median).
-Part 2 (share): bench/in.darcy_share (9,600 grains, pair linear/coulomb, grid 6x3x6) run
+Part 2 (share): two 9,600-grain scenes, grid 6x3x6, pair linear/coulomb, each run
   without the fix, with `every 1` and with `every 10`, interleaved; share of the fix =
-  (t_fix - t_none) / t_fix. With --baseline DIR also the plugin in DIR (before/after).
+  (t_fix - t_none) / t_fix. "columns": bench/in.darcy_share (grains stacked in columns,
+  2 contacts a grain: an upper bound of the share); "bed": bench/in.darcy_share_bed (the
+  consolidated packing of examples/tidal_shear replicated 2x2x2 to the Table S1 box).
+  Time = loop CPU time (LAMMPS' loop time x its "% CPU use"), less sensitive than wall
+  time to other jobs on a shared machine. With --baseline DIR also the plugin in DIR
+  (before/after). With --instructions also callgrind instruction counts per grain and
+  step (load-independent; 100 steps each, about a minute a run).
 
 Usage (after building the plugin, e.g. into build-bench/plugin):
     source scripts/env.sh
@@ -37,8 +43,8 @@ TEND_TERZAGHI = 0.2
 PERIODS = 3
 
 
-def run_lmp(plugin, infile, variables, workdir):
-    cmd = ["lmp", "-in", os.path.join(HERE, infile), "-log", "none", "-echo", "none"]
+def run_lmp(plugin, infile, variables, workdir, wrapper=()):
+    cmd = list(wrapper) + ["lmp", "-in", os.path.join(HERE, infile), "-log", "none", "-echo", "none"]
     for k, v in variables.items():
         cmd += ["-var", k, str(v)]
     env = dict(ENV, LD_LIBRARY_PATH=os.path.abspath(plugin) + ":" + ENV.get("LD_LIBRARY_PATH", ""))
@@ -47,6 +53,12 @@ def run_lmp(plugin, infile, variables, workdir):
     if out.returncode != 0 or not loops:
         sys.exit("failed: " + " ".join(cmd) + "\n" + out.stdout[-2000:] + out.stderr[-2000:])
     return float(loops[-1]), out.stdout
+
+
+def loop_cpu_time(out):
+    """CPU time of the last run's loop: wall time x LAMMPS' "% CPU use"."""
+    wall = float(re.findall(r"Loop time of ([0-9.eE+-]+)", out)[-1])
+    return wall * float(re.findall(r"([0-9.]+)% CPU use", out)[-1]) / 100
 
 
 def read_profiles(path):
@@ -176,37 +188,79 @@ def breakdown(out):
     return get("Pair"), get("Modify")
 
 
+SCENES = (("columns", "in.darcy_share"), ("bed", "in.darcy_share_bed"))
+EXAMPLES = os.path.join(HERE, "..", "examples", "tidal_shear")
+CASES = (dict(fluid=0), dict(fluid=1, every=1), dict(fluid=1, every=10))
+
+
+def case_name(var):
+    return "none" if not var["fluid"] else f"every {var['every']}"
+
+
 def share(plugins, repeat, steps, workdir):
-    configs = [(label, plugin, var) for label, plugin in plugins
-               for var in (dict(fluid=0), dict(fluid=1, every=1), dict(fluid=1, every=10))]
+    configs = [(scene, infile, label, plugin, var) for scene, infile in SCENES
+               for label, plugin in plugins for var in CASES]
     res = {i: [] for i in range(len(configs))}
-    for r in range(repeat):
-        for i, (label, plugin, var) in enumerate(configs):
-            t, out = run_lmp(plugin, "in.darcy_share", dict(var, steps=steps), workdir)
-            res[i].append((t,) + breakdown(out))
+    for r in range(repeat):          # interleaved repeats: load drift hits all alike
+        for i, (scene, infile, label, plugin, var) in enumerate(configs):
+            _, out = run_lmp(plugin, infile, dict(var, steps=steps, examples=EXAMPLES), workdir)
+            res[i].append((loop_cpu_time(out),) + breakdown(out))
         print(f"share: repeat {r + 1}/{repeat} done", flush=True)
     med = {i: tuple(statistics.median(x[k] for x in res[i]) for k in range(3)) for i in res}
-    lines = [f"{steps} steps, median of {repeat} interleaved repeats, 1 MPI rank.", "",
-             "| plugin | fix | loop (s) | ms/step | Pair (s) | Modify (s) | fix share (with - without)/with |",
-             "|---|---|---|---|---|---|---|"]
+    lines = [f"{steps} steps, median of {repeat} interleaved repeats, 1 MPI rank; loop CPU time.", "",
+             "| scene | plugin | fix | loop CPU (s) | CPU ms/step | Pair wall (s) | Modify wall (s) | fix share |",
+             "|---|---|---|---|---|---|---|---|"]
     summary = {}
-    for i, (label, plugin, var) in enumerate(configs):
+    for i, (scene, infile, label, plugin, var) in enumerate(configs):
         t, pair, modify = med[i]
-        base = med[i - (i % 3)][0]
-        what = "none" if not var["fluid"] else f"every {var['every']}"
-        sh = (t - base) / t if var["fluid"] else 0.0
-        summary[(label, what)] = (t, sh)
-        lines.append(f"| {label} | {what} | {t:.3f} | {1e3 * t / steps:.3f} | {pair:.3f} | "
-                     f"{modify:.3f} | {100 * sh:.1f}% |" if var["fluid"] else
-                     f"| {label} | {what} | {t:.3f} | {1e3 * t / steps:.3f} | {pair:.3f} | "
-                     f"{modify:.3f} | - |")
+        base = med[i - (i % len(CASES))][0]
+        sh = (t - base) / t if var["fluid"] else None
+        summary[(scene, label, case_name(var))] = t
+        lines.append(f"| {scene} | {label} | {case_name(var)} | {t:.3f} | {1e3 * t / steps:.3f} | "
+                     f"{pair:.3f} | {modify:.3f} | " + (f"{100 * sh:.1f}% |" if sh is not None else "- |"))
     if len(plugins) == 2:
         (a, _), (b, _) = plugins
-        lines += ["", f"| fix | fix cost {a} / {b} (time of the fix alone) |", "|---|---|"]
-        for what in ("every 1", "every 10"):
-            ca = summary[(a, what)][0] - summary[(a, "none")][0]
-            cb = summary[(b, what)][0] - summary[(b, "none")][0]
-            lines.append(f"| {what} | {ca / cb:.2f} |")
+        lines += ["", f"| scene | fix | fix time {a} / {b} |", "|---|---|---|"]
+        for scene, _ in SCENES:
+            for what in ("every 1", "every 10"):
+                ca = summary[(scene, a, what)] - summary[(scene, a, "none")]
+                cb = summary[(scene, b, what)] - summary[(scene, b, "none")]
+                lines.append(f"| {scene} | {what} | {ca / cb:.2f} |")
+    return lines
+
+
+CALLGRIND_FUNCTIONS = ("Verlet::run", "FixDarcyPressure::post_force", "FixDarcyPressure::deposit_grains",
+                       "FixDarcyPressure::apply_fluid_force", "PairLinearCoulomb::compute")
+
+
+def instructions(plugins, workdir, steps=100, grains=9600):
+    """callgrind instruction counts per grain and step (inclusive) of the main functions."""
+    lines = [f"callgrind, instructions per grain and step (inclusive), over {steps} + 20 steps and 2 setups.", "",
+             "| scene | plugin | fix | whole step | fix | deposit | force | pair | fix share |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for scene, infile in SCENES:
+        for label, plugin in plugins:
+            whole_none = None
+            for var in CASES:
+                cg = os.path.join(workdir, "callgrind.out")
+                run_lmp(plugin, infile, dict(var, steps=steps, examples=EXAMPLES), workdir,
+                        wrapper=("valgrind", "--tool=callgrind", "--callgrind-out-file=" + cg))
+                text = subprocess.run(["callgrind_annotate", "--inclusive=yes", cg], capture_output=True,
+                                      text=True).stdout
+                count = {}
+                for name in CALLGRIND_FUNCTIONS:
+                    m = re.search(r"^\s*([\d,]+) .*?" + re.escape(name) + r"\(", text, re.M)
+                    count[name] = int(m.group(1).replace(",", "")) / (steps + 22) / grains if m else 0.0
+                whole = count["Verlet::run"]
+                if not var["fluid"]:
+                    whole_none = whole
+                sh = f"{100 * (whole - whole_none) / whole:.1f}%" if var["fluid"] else "-"
+                lines.append(f"| {scene} | {label} | {case_name(var)} | {whole:.0f} | "
+                             f"{count['FixDarcyPressure::post_force']:.0f} | "
+                             f"{count['FixDarcyPressure::deposit_grains']:.0f} | "
+                             f"{count['FixDarcyPressure::apply_fluid_force']:.0f} | "
+                             f"{count['PairLinearCoulomb::compute']:.0f} | {sh} |")
+            print(f"instructions: {scene} {label} done", flush=True)
     return lines
 
 
@@ -217,6 +271,7 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--steps", type=int, default=300, help="steps of the share runs")
     ap.add_argument("--part", choices=("accuracy", "share", "all"), default="all")
+    ap.add_argument("--instructions", action="store_true", help="share part: callgrind counts too")
     ap.add_argument("--out", default=os.path.join(HERE, "darcy_bench_results.md"))
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as work:
@@ -232,6 +287,8 @@ def main():
                 plugins = [("before", args.baseline)] + plugins
             text += ["## Share of the step, 9,600 grains, grid 6 x 3 x 6", ""]
             text += share(plugins, args.repeat, args.steps, work) + [""]
+            if args.instructions:
+                text += instructions(plugins, work) + [""]
     open(args.out, "w").write("\n".join(text))
     print("\n".join(text))
 

@@ -45,7 +45,7 @@ PW_INLINE int wrap_index(int i, int n)
 PW_INLINE int floor_to_int(double u)
 {
   const int i = (int) u;
-  return u < (double) i ? i - 1 : i;
+  return i - (u < (double) i ? 1 : 0);
 }
 
 // Mirror a layer index at the bottom face (cell -1 -> 0, -2 -> 1) and at the top face
@@ -96,7 +96,66 @@ PW_INLINE double clamp_porosity(double porosity, double porosity_min, double por
 // those stay library calls without -ffinite-math-only.
 PW_INLINE double cell_coordinate(double u)
 {
-  return u >= -1e9 ? (u <= 1e9 ? u : 1e9) : -1e9;
+  const double above = u > -1e9 ? u : -1e9;
+  return above < 1e9 ? above : 1e9;
+}
+
+// Where a point sits in the lattice of cell centres: the centre (i0, j0, k0) at or below
+// it in each axis (unwrapped, unmirrored) and its fractions f in [0, 1) towards the next.
+struct StencilBase {
+  int i0, j0, k0;
+  double fx, fy, fz;
+};
+
+// The map of stencil_base from points to the lattice: origin and reciprocal spacings
+// (a loop over grains builds it once rather than dividing per grain).
+struct LatticeMap {
+  double xlo, ylo, zlo;
+  double inv_dx, inv_dy, inv_dz;
+};
+
+PW_INLINE LatticeMap lattice_map(const GridGeom &g)
+{
+  return LatticeMap{g.xlo, g.ylo, g.zlo, 1.0 / g.dx, 1.0 / g.dy, 1.0 / g.dz};
+}
+
+PW_INLINE StencilBase stencil_base(const LatticeMap &m, double x, double y, double z)
+{
+  // position in units of cells from centre 0
+  const double ux = cell_coordinate((x - m.xlo) * m.inv_dx - 0.5);
+  const double uy = cell_coordinate((y - m.ylo) * m.inv_dy - 0.5);
+  const double uz = cell_coordinate((z - m.zlo) * m.inv_dz - 0.5);
+  StencilBase b;
+  b.i0 = floor_to_int(ux);
+  b.j0 = floor_to_int(uy);
+  b.k0 = floor_to_int(uz);
+  b.fx = ux - b.i0;
+  b.fy = uy - b.j0;
+  b.fz = uz - b.k0;
+  return b;
+}
+
+PW_INLINE StencilBase stencil_base(const GridGeom &g, double x, double y, double z)
+{
+  return stencil_base(lattice_map(g), x, y, z);
+}
+
+// Trilinear weights of the 8 corners c = a + 2b + 4e, (i0+a, j0+b, k0+e), of the base's
+// lattice cell: the product of the 1-D weights 1 - f (a = 0) and f (a = 1) per axis.
+PW_INLINE void corner_weights(const StencilBase &b, double w[8])
+{
+  const double wx[2] = {1.0 - b.fx, b.fx}, wy[2] = {1.0 - b.fy, b.fy};
+  const double wz[2] = {1.0 - b.fz, b.fz};
+  for (int c = 0; c < 8; ++c) w[c] = wx[c & 1] * wy[(c >> 1) & 1] * wz[c >> 2];
+}
+
+// The grid cells of those corners: wrapped in x and y, mirrored into the grid in z.
+PW_INLINE void corner_cells(const GridGeom &g, const StencilBase &b, int idx[8])
+{
+  const int ii[2] = {wrap_index(b.i0, g.nx), wrap_index(b.i0 + 1, g.nx)};
+  const int jj[2] = {wrap_index(b.j0, g.ny), wrap_index(b.j0 + 1, g.ny)};
+  const int kk[2] = {mirror_index(b.k0, g.nz), mirror_index(b.k0 + 1, g.nz)};
+  for (int c = 0; c < 8; ++c) idx[c] = cell_index(g, ii[c & 1], jj[(c >> 1) & 1], kk[c >> 2]);
 }
 
 // The 8 (cell index, weight) pairs of the trilinear stencil of point (x,y,z): equal to
@@ -106,21 +165,9 @@ PW_INLINE double cell_coordinate(double u)
 PW_INLINE void stencil(const GridGeom &g, double x, double y, double z, int idx[8],
                        double w[8])
 {
-  // position in units of cells from centre 0
-  const double ux = cell_coordinate((x - g.xlo) / g.dx - 0.5);
-  const double uy = cell_coordinate((y - g.ylo) / g.dy - 0.5);
-  const double uz = cell_coordinate((z - g.zlo) / g.dz - 0.5);
-  const int i0 = floor_to_int(ux), j0 = floor_to_int(uy), k0 = floor_to_int(uz);
-  const double fx = ux - i0, fy = uy - j0, fz = uz - k0;
-  const int ii[2] = {wrap_index(i0, g.nx), wrap_index(i0 + 1, g.nx)};
-  const int jj[2] = {wrap_index(j0, g.ny), wrap_index(j0 + 1, g.ny)};
-  const int kk[2] = {mirror_index(k0, g.nz), mirror_index(k0 + 1, g.nz)};
-  const double wx[2] = {1.0 - fx, fx}, wy[2] = {1.0 - fy, fy}, wz[2] = {1.0 - fz, fz};
-  for (int c = 0; c < 8; ++c) {
-    const int a = c & 1, b = (c >> 1) & 1, e = c >> 2;
-    idx[c] = cell_index(g, ii[a], jj[b], kk[e]);
-    w[c] = wx[a] * wy[b] * wz[e];
-  }
+  const StencilBase b = stencil_base(g, x, y, z);
+  corner_weights(b, w);
+  corner_cells(g, b, idx);
 }
 
 // Interpolate a cell field to a point from its stencil; field[stride*cell] is the value

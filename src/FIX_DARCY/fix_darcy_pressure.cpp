@@ -31,13 +31,16 @@ using namespace FixConst;
 namespace {
 const int RESTART_VERSION = 2;    // 2: the solver state ends with the fluid balance
 const int RESTART_HEADER = 14;    // values before the solver state, see write_restart()
+const int BLOCK_DEPOSITS = 40;    // per stencil block: 5 quantities at 8 corners
+const int BLOCK_GRADIENT = 32;    // per stencil block: 8 corners of 3 components and a pad
 }    // namespace
 
 /* ---------------------------------------------------------------------- */
 
 FixDarcyPressure::FixDarcyPressure(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), layout{0}, rho_g{0.0, 0.0, 0.0}, gradient_changed(true),
-    fluid_force(nullptr), maxatom(0), stencils_valid(false), stencils_nlocal(0), started(false), last_fluid_step(0),
+    fluid_force(nullptr), maxatom(0), blocks{0, 0, 0}, stencils_step(-1), stencils_nlocal(0),
+    started(false), last_fluid_step(0),
     last_solve{true, 0, 0.0, 0.0, -1}, porosity_warned(false), profile_fp(nullptr),
     last_profile_step(-1), last_vtk_step(-1)
 {
@@ -57,6 +60,9 @@ FixDarcyPressure::FixDarcyPressure(LAMMPS *lmp, int narg, char **arg) :
   if (!s.z_top_given) settings.z_top.value = solver->z_grid_top();
   layout = porewater::DepositLayout{solver->ncells()};
   deposits.assign(layout.size(), 0.0);
+  blocks = porewater::StencilBlocks{geom.nx, geom.ny, geom.nz};
+  block_deposits.assign(BLOCK_DEPOSITS * blocks.count(), 0.0);
+  block_gradient.assign(BLOCK_GRADIENT * blocks.count(), 0.0);
   for (int d = 0; d < 3; ++d) rho_g[d] = s.density * s.gravity[d];
 
   if (comm->me == 0) {
@@ -229,58 +235,139 @@ void FixDarcyPressure::sum_deposits()
   MPI_Bcast(data, layout.size(), MPI_DOUBLE, 0, world);
 }
 
+// Per grain: the stencil's block and corner weights at x and at x + v*interval, summed
+// per block (contiguous adds); the blocks are folded into the cells at the end. Grains
+// more than half a cell outside the grid in z deposit into the cells directly.
 void FixDarcyPressure::deposit_grains(double interval)
 {
   double **x = atom->x, **v = atom->v;
   const double *radius = atom->radius;
   const int *mask = atom->mask;
   double *sums = deposits.data();
-  const auto add = [sums](int slot, double value) { sums[slot] += value; };
-  const int nlocal = atom->nlocal;
-  // grows with the atoms, never shrinks: no allocation in a normal step
-  if ((int) stencil_w.size() < 8 * nlocal) {
-    stencil_idx.resize(8 * (size_t) atom->nmax);
-    stencil_w.resize(8 * (size_t) atom->nmax);
+  const auto add_to_cell = [sums](int slot, double value) { sums[slot] += value; };
+  std::fill(block_deposits.begin(), block_deposits.end(), 0.0);
+  double *block_sums = block_deposits.data();
+  // local copies: the compiler may then keep them in registers across the stores
+  const porewater::GridGeom g = geom;
+  const porewater::LatticeMap map = porewater::lattice_map(geom);
+  const porewater::StencilBlocks grid_blocks = blocks;
+  const porewater::DepositLayout slots = layout;
+  const int nlocal = atom->nlocal, bit = groupbit;
+  // grow with the atoms, never shrink: no allocation in a normal step
+  if ((int) grain_block.size() < nlocal) {
+    grain_block.resize(atom->nmax);
+    grain_weights.resize(8 * (size_t) atom->nmax);
   }
-  int *idx = stencil_idx.data();
-  double *w = stencil_w.data();
-  for (int i = 0; i < nlocal; ++i)
-    if (mask[i] & groupbit)
-      porewater::deposit_grain(geom, layout, x[i][0], x[i][1], x[i][2], v[i][0], v[i][1], v[i][2],
-                               porewater::sphere_volume(radius[i]), interval, add, idx + 8 * i,
-                               w + 8 * i);
-  // a non-finite grain leaves its stencil unset, but deposit_and_sum then stops the run
-  stencils_valid = true;
+  int *stored_block = grain_block.data();
+  double *stored_weights = grain_weights.data();
+  for (int i = 0; i < nlocal; ++i) {
+    stored_block[i] = -1;
+    if (!(mask[i] & bit)) continue;
+    const double x0 = x[i][0], x1 = x[i][1], x2 = x[i][2];
+    const double v0 = v[i][0], v1 = v[i][1], v2 = v[i][2];
+    if (!porewater::grain_is_finite(x0, x1, x2, v0, v1, v2)) {
+      sums[slots.nonfinite()] += 1.0;
+      continue;
+    }
+    const double volume = porewater::sphere_volume(radius[i]);
+    const porewater::StencilBase at = porewater::stencil_base(map, x0, x1, x2);
+    const porewater::StencilBase ahead = porewater::stencil_base(
+        map, x0 + v0 * interval, x1 + v1 * interval, x2 + v2 * interval);
+    const int block = grid_blocks.block(at), block_ahead = grid_blocks.block(ahead);
+    if (block < 0 || block_ahead < 0) {
+      porewater::deposit_grain(g, slots, x0, x1, x2, v0, v1, v2, volume, interval,
+                               add_to_cell);
+      continue;
+    }
+    double *w = stored_weights + 8 * i, w_ahead[8];
+    porewater::corner_weights(at, w);
+    porewater::corner_weights(ahead, w_ahead);
+    stored_block[i] = block;
+    double *sum_at = block_sums + BLOCK_DEPOSITS * block;
+    double *sum_ahead = block_sums + BLOCK_DEPOSITS * block_ahead;
+    porewater::deposit_corners(w, w_ahead, volume, v0, v1, v2,
+                               [sum_at, sum_ahead](int c, int q, double value) {
+                                 (q < 4 ? sum_at : sum_ahead)[8 * q + c] += value;
+                               });
+  }
+  fold_block_deposits();
+  stencils_step = update->ntimestep;
   stencils_nlocal = nlocal;
 }
 
+void FixDarcyPressure::fold_block_deposits()
+{
+  double *sums = deposits.data();
+  for (int block = 0; block < blocks.count(); ++block) {
+    const double *from = block_deposits.data() + BLOCK_DEPOSITS * block;
+    int idx[8];
+    porewater::corner_cells(geom, blocks.base(block), idx);
+    for (int c = 0; c < 8; ++c) {
+      sums[layout.volume(idx[c])] += from[c];
+      for (int d = 0; d < 3; ++d) sums[layout.momentum(idx[c]) + d] += from[8 * (1 + d) + c];
+      sums[layout.predicted_volume(idx[c])] += from[32 + c];
+    }
+  }
+}
+
+void FixDarcyPressure::update_block_gradient()
+{
+  const double *gradient = solver->pressure_gradient().data();
+  for (int block = 0; block < blocks.count(); ++block) {
+    int idx[8];
+    porewater::corner_cells(geom, blocks.base(block), idx);
+    porewater::corner_vectors(gradient, idx, block_gradient.data() + BLOCK_GRADIENT * block);
+  }
+}
+
+// The same interpolation as porewater::fluid_force, from the block's corner gradients.
 void FixDarcyPressure::apply_fluid_force()
 {
   if (atom->nmax > maxatom) grow_fluid_force(atom->nmax);
+  if (gradient_changed) update_block_gradient();
+  gradient_changed = false;
   double **x = atom->x, **f = atom->f;
   const double *radius = atom->radius;
   const int *mask = atom->mask;
   const double *gradient = solver->pressure_gradient().data();
-  // the stencils of deposit_grains when it ran in this step (fluid steps), else computed here
-  const bool cached = stencils_valid && stencils_nlocal == atom->nlocal;
-  stencils_valid = false;
-  const int *idx = stencil_idx.data();
-  const double *w = stencil_w.data();
-  for (int i = 0; i < atom->nlocal; ++i) {
+  const double *corner_gradients = block_gradient.data();
+  const double buoyancy[3] = {rho_g[0], rho_g[1], rho_g[2]};
+  const porewater::GridGeom g = geom;    // local copies, as in deposit_grains
+  const porewater::LatticeMap map = porewater::lattice_map(geom);
+  const porewater::StencilBlocks grid_blocks = blocks;
+  const int nlocal = atom->nlocal, bit = groupbit;
+  // the stencils deposit_grains stored if it ran in this step (a fluid step), else new ones
+  const bool stored = stencils_step == update->ntimestep && stencils_nlocal == nlocal;
+  stencils_step = -1;
+  const int *stored_block = grain_block.data();
+  const double *stored_weights = grain_weights.data();
+  for (int i = 0; i < nlocal; ++i) {
     double *ff = fluid_force[i];
-    if (mask[i] & groupbit) {
-      if (cached)
-        porewater::fluid_force_from_stencil(gradient, rho_g, idx + 8 * i, w + 8 * i,
-                                            porewater::sphere_volume(radius[i]), ff);
-      else
-        porewater::fluid_force(geom, gradient, rho_g, x[i][0], x[i][1], x[i][2],
-                               porewater::sphere_volume(radius[i]), ff);
-      f[i][0] += ff[0];
-      f[i][1] += ff[1];
-      f[i][2] += ff[2];
-    } else {
+    if (!(mask[i] & bit)) {
       ff[0] = ff[1] = ff[2] = 0.0;
+      continue;
     }
+    const double volume = porewater::sphere_volume(radius[i]);
+    int block;
+    double w[8];
+    const double *weights = w;
+    if (stored) {
+      block = stored_block[i];
+      weights = stored_weights + 8 * i;
+    } else {
+      const porewater::StencilBase at = porewater::stencil_base(map, x[i][0], x[i][1], x[i][2]);
+      block = grid_blocks.block(at);
+      porewater::corner_weights(at, w);
+    }
+    if (block >= 0) {
+      porewater::fluid_force_from_corners(corner_gradients + BLOCK_GRADIENT * block, buoyancy,
+                                          weights, volume, ff);
+    } else {
+      porewater::fluid_force(g, gradient, buoyancy, x[i][0], x[i][1], x[i][2], volume, ff);
+    }
+    f[i][0] += ff[0];
+    f[i][1] += ff[1];
+    f[i][2] += ff[2];
   }
 }
 
@@ -433,7 +520,8 @@ double FixDarcyPressure::memory_usage()
 {
   // the solver holds about 30 doubles per cell (fields, coefficients, CG work)
   return (double) maxatom * 3 * sizeof(double) +
-      (double) stencil_idx.size() * sizeof(int) + (double) stencil_w.size() * sizeof(double) +
+      (double) (block_deposits.size() + block_gradient.size() + grain_weights.size()) *
+          sizeof(double) + (double) grain_block.size() * sizeof(int) +
       (double) (deposits.size() + 30 * solver->ncells()) * sizeof(double);
 }
 

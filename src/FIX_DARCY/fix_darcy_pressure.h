@@ -67,11 +67,19 @@ class FixDarcyPressure : public Fix {
   void write_output();
   std::string describe_cell(int cell) const;
 
-  // the stencils of this rank's grains at x from the last deposit_grains (8 cells, weights
-  // per grain), reused by apply_fluid_force in the same step: the positions have not moved
-  std::vector<int> stencil_idx;
-  std::vector<double> stencil_w;
-  bool stencils_valid;
+  // CPU deposits and force interpolation per stencil block (porewater::StencilBlocks):
+  // deposits summed per block and corner, [quantity (5)][corner (8)] a block, then folded
+  // into the cells; and the pressure gradient at each block's corners, [corner][xyz, 0]
+  void fold_block_deposits();
+  void update_block_gradient();
+  porewater::StencilBlocks blocks;
+  std::vector<double> block_deposits;
+  std::vector<double> block_gradient;
+  // each grain's block (-1: none) and corner weights at x from the last deposit_grains,
+  // reused by apply_fluid_force in the same step (the grains have not moved since)
+  std::vector<int> grain_block;
+  std::vector<double> grain_weights;
+  bigint stencils_step;    // the step deposit_grains stored them in, -1: none
   int stencils_nlocal;
 
   bool started;              // the fluid state exists (first setup done, or restarted)

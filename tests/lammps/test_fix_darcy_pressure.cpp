@@ -164,6 +164,25 @@ TEST(FixDarcyPressure, NoGrainsStaysExactlyZero)
   }
 }
 
+TEST(FixDarcyPressure, SteadyStateSolvesInZeroIterationsAndKeepsPExactly)
+{
+  // Dirichlet 1 below, 0 on top, D = 1, 8 layers of 0.125: after 400 steps of 0.01 the
+  // slowest mode is down by e^-99, far below tol 1e-12, so the warm-started solve (for the
+  // change of p) meets the tolerance before any CG iteration and p stays bit-for-bit.
+  for (const char *every : {"1", "3"}) {
+    Lammps l;
+    empty_column(l, 1.0);
+    l.command(std::string("fix fl all darcy/pressure grid 2 1 8") + unit_diffusivity +
+              " bottom 1 tol 1e-12 every " + every);
+    l.commands("timestep 0.01\nrun 400\n");
+    const auto steady = field(l, "pressure", 16);
+    EXPECT_NEAR(steady[0], 1.0 - 0.0625, 1e-11) << every;    // linear: 1 - z
+    l.command("run 30");
+    EXPECT_EQ(l.equal("f_fl[4]"), 0.0) << every;    // iterations of the last solve
+    EXPECT_EQ(max_abs_diff(field(l, "pressure", 16), steady), 0.0) << every;
+  }
+}
+
 TEST(FixDarcyPressure, TerzaghiThroughTheFixUsesTimestepAndEvery)
 {
   // D = 1, H = 1, 40 layers; fluid step 4e-4 either as 4 steps of 1e-4 or 1 of 4e-4

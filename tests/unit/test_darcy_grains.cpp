@@ -101,3 +101,56 @@ TEST(DarcyGrains, StencilStaysInsideTheGridForAnyPoint)
     }
   }
 }
+
+TEST(DarcyGrains, BlockOfAStencilHasTheSameCellsAndFoldsToTheSameDeposits)
+{
+  // points all over the grid, across the periodic seams and up to half a cell outside it
+  // in z: the block's corner cells are the stencil's, and deposits summed per block and
+  // folded into the cells equal the per-cell deposits to round-off (sums reordered)
+  const StencilBlocks blocks{grid.nx, grid.ny, grid.nz};
+  const DepositLayout layout{cell_count(grid)};
+  std::vector<double> direct(layout.size(), 0.0), per_block(40 * blocks.count(), 0.0);
+  auto add = [&direct](int slot, double value) { direct[slot] += value; };
+  const double volume = 1e-4, v[3] = {0.3, -0.2, 0.5}, interval = 0.05;
+  int points = 0;
+  for (double x = -0.35; x < 0.25; x += 0.037)
+    for (double y = 1.05; y < 1.65; y += 0.041)
+      for (double z = 0.2 - 0.49 * grid.dz; z < 0.2 + 6.49 * grid.dz; z += 0.023) {
+        const StencilBase at = stencil_base(grid, x, y, z);
+        const StencilBase ahead =
+            stencil_base(grid, x + v[0] * interval, y + v[1] * interval, z + v[2] * interval);
+        const int block = blocks.block(at), block_ahead = blocks.block(ahead);
+        if (block_ahead < 0) continue;    // the predicted point left the blocks' range
+        ASSERT_GE(block, 0) << x << " " << y << " " << z;
+        int idx[8], from_block[8];
+        corner_cells(grid, at, idx);
+        corner_cells(grid, blocks.base(block), from_block);
+        for (int c = 0; c < 8; ++c) ASSERT_EQ(from_block[c], idx[c]);
+        double w[8], w_ahead[8];
+        corner_weights(at, w);
+        corner_weights(ahead, w_ahead);
+        deposit_corners(w, w_ahead, volume, v[0], v[1], v[2], [&](int c, int q, double value) {
+          per_block[40 * (q < 4 ? block : block_ahead) + 8 * q + c] += value;
+        });
+        deposit_grain(grid, layout, x, y, z, v[0], v[1], v[2], volume, interval, add);
+        ++points;
+      }
+  ASSERT_GT(points, 1000);
+  std::vector<double> folded(layout.size(), 0.0);
+  for (int block = 0; block < blocks.count(); ++block) {
+    int idx[8];
+    corner_cells(grid, blocks.base(block), idx);
+    for (int c = 0; c < 8; ++c) {
+      folded[layout.volume(idx[c])] += per_block[40 * block + c];
+      for (int d = 0; d < 3; ++d)
+        folded[layout.momentum(idx[c]) + d] += per_block[40 * block + 8 * (1 + d) + c];
+      folded[layout.predicted_volume(idx[c])] += per_block[40 * block + 32 + c];
+    }
+  }
+  // both orders of a slot's sum lie within n u sum|terms| of the exact sum (recursive
+  // summation bound, n <= points terms, u = 1.1e-16, sum|terms| <= points * volume * 1)
+  const double bound = 2.0 * points * 1.1e-16 * points * volume;
+  for (int s = 0; s < layout.size(); ++s) EXPECT_NEAR(folded[s], direct[s], bound) << s;
+  EXPECT_EQ(blocks.block(stencil_base(grid, 0.0, 1.3, 0.2 - 0.51 * grid.dz)), -1);
+  EXPECT_EQ(blocks.block(stencil_base(grid, 0.0, 1.3, 0.2 + 6.51 * grid.dz)), -1);
+}
