@@ -14,8 +14,8 @@ namespace LAMMPS_NS {
 
 template <class DeviceType> class FixNeighHistoryKokkos;
 
-// LAMMPS' ScatterViewHelper::get returns a copy: copying a managed view once per grain costs
-// a reference-tracking check in the kernel (10% of its instructions); this returns a reference
+// LAMMPS' ScatterViewHelper::get returns a copy, made once per grain in the kernel (a view
+// copy and its reference-tracking check); this returns a reference
 template <class Dup> struct ScatterPick;
 template <> struct ScatterPick<Kokkos::Experimental::ScatterDuplicated> {
   template <class D, class N> KOKKOS_INLINE_FUNCTION static const D &get(const D &dup, const N &)
