@@ -232,6 +232,19 @@ TEST(PairLinearCoulomb, FrictionlessPairsSkipTheSpringWithoutChangingTheFlow)
   EXPECT_LE(pwtest::max_abs_diff(native_kt0, ours_kt0), 1e-12);
 }
 
+TEST(PairLinearCoulomb, FrictionlessImpactDissipatesNothing)
+{
+  // μ = 0: no spring is kept, so none is reset and nothing is counted as lost; the energy
+  // residual is then only the normal spring's switching error, bounded by ½k_n(vΔt)² per
+  // switch (budget_bound without its k_t term), where the frictional bound is 1000× larger
+  const double dt = 1e-5, kn = 1e4, v = 1.0;
+  Lammps l;
+  const double res = budget_residual(0.7, 0.0, dt, l);
+  EXPECT_EQ(l.equal("c_pair[1]"), 0.0);
+  EXPECT_LE(std::abs(res), kn * (v * dt) * (v * dt));
+  std::printf("[ report ] frictionless oblique impact: energy residual %.3e\n", res);
+}
+
 TEST(PairLinearCoulomb, KokkosEqualsCpuWithFrictionlessAndFrictionalTypePairs)
 {
   // per type pair: the flowing grains (type 1) rub each other, slide freely on the base (2)
