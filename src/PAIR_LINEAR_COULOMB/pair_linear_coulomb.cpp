@@ -137,7 +137,7 @@ template <int MODE> void PairLinearCoulomb::eval()
         if (tracking && touch[jj])
           lost += porewater::pair_share(j, nlocal, newton_pair) *
               porewater::opening_loss(kt_row[UNIFORM ? 1 : type[j]], xi);
-        if (touch[jj]) {    // most neighbors stay apart: no stores for them
+        if (touch[jj]) {    // most stay apart: no stores (flag 0 means history 0)
           touch[jj] = 0;
           xi[0] = xi[1] = xi[2] = 0.0;
         }

@@ -4,6 +4,8 @@
    Compared with gran/hooke/history/kk of this LAMMPS version: one pass over the
    neighbor list instead of two (no separate "touch" list), per-type coefficients, and the
    virial tallied from each pair's own force (the native style tallies a running sum).
+   Few neighbors touch in a granular flow, so velocities are read, histories and forces
+   written only for closed contacts (bench/RESULTS.md).
 ------------------------------------------------------------------------- */
 
 #include "pair_linear_coulomb_kokkos.h"
@@ -271,7 +273,7 @@ KOKKOS_FORCEINLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()
         ev.ecoul += porewater::pair_share(j, nlocal, NEWTON_PAIR) *
             porewater::opening_loss(params(itype, type[j]).kt, xi_open);
       }
-      if (d_firsttouch(i, jj)) {    // most neighbors stay apart: no stores for them
+      if (d_firsttouch(i, jj)) {    // most stay apart: no stores (flag 0 means history 0)
         d_firsttouch(i, jj) = 0;
         d_firstxi(i, 3 * jj) = 0.0;
         d_firstxi(i, 3 * jj + 1) = 0.0;

@@ -45,7 +45,8 @@ template <class DeviceType> class PairLinearCoulombKokkos : public PairLinearCou
   void init_style() override;
   double init_one(int, int) override;
 
-  // one pass per owned grain: open contacts are cleared, closed ones computed
+  // one pass per owned grain: open contacts are cleared, closed ones computed; force-inlined
+  // into the Kokkos loop, so that the per-grain setup is hoisted out of it
   template <int NEIGHFLAG, int NEWTON_PAIR, int EVFLAG, int UPDATE_HISTORY>
   KOKKOS_FORCEINLINE_FUNCTION void
   operator()(TagPairLinearCoulombCompute<NEIGHFLAG, NEWTON_PAIR, EVFLAG, UPDATE_HISTORY>, const int,
