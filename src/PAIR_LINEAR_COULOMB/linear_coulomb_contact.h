@@ -32,15 +32,25 @@ PW_INLINE double lever_arm(const int lever, const double rad, const double overl
   return lever == LEVER_RADIUS ? rad : rad - 0.5 * overlap;
 }
 
+// A pair with kt = 0 or mu = 0 never has a tangential force: its spring need not be kept.
+PW_INLINE bool is_frictionless(const double kt, const double mu)
+{
+  return kt == 0.0 || mu == 0.0;
+}
+
 // Contact between grains i and j that overlap (rsq < (radi+radj)²).
 // del = x_i − x_j; xi[3] is the tangential spring history, updated in place;
 // update_history = 0 during setup (forces from the stored spring, no integration),
-// as gran/hooke/history does.
+// as gran/hooke/history does. frictional = !is_frictionless(kt, mu), passed in so that a
+// caller can decide it once per type pair; a frictionless pair skips the spring: f_t = 0 and
+// tor = 0 as the full path gives, xi is cleared (a spring left by an earlier pair_coeff with
+// friction is forgotten, its energy counted in xisq_before).
 PW_INLINE ContactForce linear_coulomb_contact(
     const double delx, const double dely, const double delz, const double rsq,
     const double radi, const double radj, const double *vi, const double *vj,
     const double *wi, const double *wj, const double kn, const double kt, const double mu,
-    const int lever, const int update_history, const double dt, double *xi)
+    const int lever, const int update_history, const double dt, double *xi,
+    const bool frictional)
 {
   ContactForce c;
   const double radsum = radi + radj;
@@ -50,6 +60,21 @@ PW_INLINE ContactForce linear_coulomb_contact(
   const double overlap = radsum - r;
   c.lever_i = lever_arm(lever, radi, overlap);
   c.lever_j = lever_arm(lever, radj, overlap);
+
+  // normal force magnitude per unit |del|: k_n δ / r
+  const double ccel = kn * overlap * rinv;
+  c.ccel = ccel;
+  c.overlap = overlap;
+
+  if (!frictional) {
+    c.xisq_before = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
+    xi[0] = xi[1] = xi[2] = 0.0;
+    for (int k = 0; k < 3; k++) c.ft[k] = c.tor[k] = 0.0;
+    c.f[0] = delx * ccel;
+    c.f[1] = dely * ccel;
+    c.f[2] = delz * ccel;
+    return c;
+  }
 
   // relative velocity and its part tangential to n = del/r
   const double vr1 = vi[0] - vj[0];
@@ -67,9 +92,6 @@ PW_INLINE ContactForce linear_coulomb_contact(
   const double vtr1 = vt1 - (delz * wr2 - dely * wr3);
   const double vtr2 = vt2 - (delx * wr3 - delz * wr1);
   const double vtr3 = vt3 - (dely * wr1 - delx * wr2);
-
-  // normal force magnitude per unit |del|: k_n δ / r
-  const double ccel = kn * overlap * rinv;
 
   // tangential spring: integrate, then project onto the current tangent plane
   if (update_history) {
@@ -106,7 +128,6 @@ PW_INLINE ContactForce linear_coulomb_contact(
     }
   }
 
-  c.ccel = ccel;
   c.ft[0] = fs1;
   c.ft[1] = fs2;
   c.ft[2] = fs3;
@@ -116,9 +137,18 @@ PW_INLINE ContactForce linear_coulomb_contact(
   c.tor[0] = rinv * (dely * fs3 - delz * fs2);
   c.tor[1] = rinv * (delz * fs1 - delx * fs3);
   c.tor[2] = rinv * (delx * fs2 - dely * fs1);
-  c.overlap = overlap;
   c.xisq_before = xisq_before;
   return c;
+}
+
+PW_INLINE ContactForce linear_coulomb_contact(
+    const double delx, const double dely, const double delz, const double rsq,
+    const double radi, const double radj, const double *vi, const double *vj,
+    const double *wi, const double *wj, const double kn, const double kt, const double mu,
+    const int lever, const int update_history, const double dt, double *xi)
+{
+  return linear_coulomb_contact(delx, dely, delz, rsq, radi, radj, vi, vj, wi, wj, kn, kt, mu,
+                                lever, update_history, dt, xi, !is_frictionless(kt, mu));
 }
 
 // Elastic energy stored in a contact: ½k_n δ² + ½k_t|ξ|² (ξ as the contact left it).

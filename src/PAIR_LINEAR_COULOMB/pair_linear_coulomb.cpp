@@ -54,11 +54,14 @@ void PairLinearCoulomb::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (uniform_coeffs < 0) uniform_coeffs = coefficients_are_uniform() ? 1 : 0;
-  // one set of coefficients for every type pair (the common case) needs no type lookups
-  if (uniform_coeffs)
-    eval<1>();
+  // one set of coefficients for every type pair (the common case) needs no type lookups,
+  // and then whether pairs have friction is known before the loop
+  if (!uniform_coeffs)
+    eval<MIXED>();
+  else if (porewater::is_frictionless(kt_ij[1][1], mu_ij[1][1]))
+    eval<UNIFORM_FRICTIONLESS>();
   else
-    eval<0>();
+    eval<UNIFORM_FRICTIONAL>();
   pvector[0] = dissipated;
 }
 
@@ -82,8 +85,9 @@ bool PairLinearCoulomb::coefficients_are_uniform() const
   return true;
 }
 
-template <int UNIFORM> void PairLinearCoulomb::eval()
+template <int MODE> void PairLinearCoulomb::eval()
 {
+  constexpr bool UNIFORM = MODE != MIXED;
   const int update_history = update->setupflag ? 0 : 1;
 
   double **x = atom->x;
@@ -133,37 +137,47 @@ template <int UNIFORM> void PairLinearCoulomb::eval()
         if (tracking && touch[jj])
           lost += porewater::pair_share(j, nlocal, newton_pair) *
               porewater::opening_loss(kt_row[UNIFORM ? 1 : type[j]], xi);
-        touch[jj] = 0;
-        xi[0] = xi[1] = xi[2] = 0.0;
+        if (touch[jj]) {    // most stay apart: no stores (flag 0 means history 0)
+          touch[jj] = 0;
+          xi[0] = xi[1] = xi[2] = 0.0;
+        }
         continue;
       }
       touch[jj] = 1;
       const int jtype = UNIFORM ? 1 : type[j];
+      const double kt_pair = kt_row[jtype], mu_pair = mu_row[jtype];
+      // a frictionless pair has no torque and no spring
+      const bool frictional =
+          UNIFORM ? MODE == UNIFORM_FRICTIONAL : !porewater::is_frictionless(kt_pair, mu_pair);
       const ContactForce c = porewater::linear_coulomb_contact(
           delx, dely, delz, rsq, radi, radj, v[i], v[j], omega[i], omega[j], kn_row[jtype],
-          kt_row[jtype], mu_row[jtype], lever_mode, update_history, step, xi);
+          kt_pair, mu_pair, lever_mode, update_history, step, xi, frictional);
       if (porewater::contact_is_broken(c.overlap, radi, radj, limit))
         broken_contact(i, j, c.overlap);
       if (tracking)
-        lost += porewater::pair_share(j, nlocal, newton_pair) * porewater::spring_loss(kt_row[jtype], c, xi);
+        lost += porewater::pair_share(j, nlocal, newton_pair) * porewater::spring_loss(kt_pair, c, xi);
 
       f[i][0] += c.f[0];
       f[i][1] += c.f[1];
       f[i][2] += c.f[2];
-      torque[i][0] -= c.lever_i * c.tor[0];
-      torque[i][1] -= c.lever_i * c.tor[1];
-      torque[i][2] -= c.lever_i * c.tor[2];
+      if (frictional) {
+        torque[i][0] -= c.lever_i * c.tor[0];
+        torque[i][1] -= c.lever_i * c.tor[1];
+        torque[i][2] -= c.lever_i * c.tor[2];
+      }
       if (newton_pair || j < nlocal) {
         f[j][0] -= c.f[0];
         f[j][1] -= c.f[1];
         f[j][2] -= c.f[2];
-        torque[j][0] -= c.lever_j * c.tor[0];
-        torque[j][1] -= c.lever_j * c.tor[1];
-        torque[j][2] -= c.lever_j * c.tor[2];
+        if (frictional) {
+          torque[j][0] -= c.lever_j * c.tor[0];
+          torque[j][1] -= c.lever_j * c.tor[1];
+          torque[j][2] -= c.lever_j * c.tor[2];
+        }
       }
       if (evflag)
         ev_tally_xyz(i, j, nlocal, newton_pair,
-                     eflag_either ? porewater::contact_energy(kn_row[jtype], kt_row[jtype], c, xi) : 0.0,
+                     eflag_either ? porewater::contact_energy(kn_row[jtype], kt_pair, c, xi) : 0.0,
                      0.0, c.f[0], c.f[1], c.f[2], delx, dely, delz);
     }
   }

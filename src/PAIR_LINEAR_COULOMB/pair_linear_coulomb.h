@@ -41,7 +41,8 @@ class PairLinearCoulomb : public PairGranHookeHistory {
   void allocate_coeffs();
   bool coefficients_are_uniform() const;
   void broken_contact(int i, int j, double overlap);
-  template <int UNIFORM> void eval();
+  enum { MIXED, UNIFORM_FRICTIONAL, UNIFORM_FRICTIONLESS };    // eval() modes
+  template <int MODE> void eval();
 };
 
 }    // namespace LAMMPS_NS

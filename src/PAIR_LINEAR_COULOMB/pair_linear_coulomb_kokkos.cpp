@@ -4,6 +4,8 @@
    Compared with gran/hooke/history/kk of this LAMMPS version: one pass over the
    neighbor list instead of two (no separate "touch" list), per-type coefficients, and the
    virial tallied from each pair's own force (the native style tallies a running sum).
+   Few neighbors touch in a granular flow, so velocities are read, histories and forces
+   written only for closed contacts (bench/RESULTS.md).
 ------------------------------------------------------------------------- */
 
 #include "pair_linear_coulomb_kokkos.h"
@@ -96,6 +98,7 @@ template <class DeviceType> double PairLinearCoulombKokkos<DeviceType>::init_one
   k_params.h_view(i, j).kn = kn_ij[i][j];
   k_params.h_view(i, j).kt = kt_ij[i][j];
   k_params.h_view(i, j).mu = mu_ij[i][j];
+  k_params.h_view(i, j).frictional = porewater::is_frictionless(kt_ij[i][j], mu_ij[i][j]) ? 0 : 1;
   k_params.h_view(j, i) = k_params.h_view(i, j);
   k_params.template modify<LMPHostType>();
   return cut;
@@ -233,15 +236,14 @@ void PairLinearCoulombKokkos<DeviceType>::launch(int inum, EV_FLOAT &ev)
 
 template <class DeviceType>
 template <int NEIGHFLAG, int NEWTON_PAIR, int EVFLAG, int UPDATE_HISTORY>
-KOKKOS_INLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
+KOKKOS_FORCEINLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
     TagPairLinearCoulombCompute<NEIGHFLAG, NEWTON_PAIR, EVFLAG, UPDATE_HISTORY>, const int ii,
     EV_FLOAT &ev) const
 {
   // threads sharing j (HALFTHREAD) write per-thread copies on OpenMP, atomically on GPUs
-  auto v_f = ScatterViewHelper<typename NeedDup<NEIGHFLAG, DeviceType>::value, DupForce,
-                               NonDupForce>::get(dup_f, ndup_f);
-  auto v_torque = ScatterViewHelper<typename NeedDup<NEIGHFLAG, DeviceType>::value, DupForce,
-                                    NonDupForce>::get(dup_torque, ndup_torque);
+  typedef ScatterPick<typename NeedDup<NEIGHFLAG, DeviceType>::value> Pick;
+  const auto &v_f = Pick::get(dup_f, ndup_f);
+  const auto &v_torque = Pick::get(dup_torque, ndup_torque);
   auto a_f = v_f.template access<typename AtomicDup<NEIGHFLAG, DeviceType>::value>();
   auto a_torque = v_torque.template access<typename AtomicDup<NEIGHFLAG, DeviceType>::value>();
 
@@ -249,10 +251,9 @@ KOKKOS_INLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
   const double xtmp = x(i, 0), ytmp = x(i, 1), ztmp = x(i, 2);
   const double radi = radius[i];
   const int itype = type[i];
-  const double vi[3] = {v(i, 0), v(i, 1), v(i, 2)};
-  const double wi[3] = {omega(i, 0), omega(i, 1), omega(i, 2)};
-  double fi[3] = {0.0, 0.0, 0.0};
-  double ti[3] = {0.0, 0.0, 0.0};
+  double fx_i = 0.0, fy_i = 0.0, fz_i = 0.0;    // scalars, not arrays: kept in registers
+  double tx_i = 0.0, ty_i = 0.0, tz_i = 0.0;
+  bool closed_any = false;    // most grains have no closed contact in their half list
 
   const int jnum = d_numneigh[i];
   for (int jj = 0; jj < jnum; jj++) {
@@ -272,19 +273,25 @@ KOKKOS_INLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
         ev.ecoul += porewater::pair_share(j, nlocal, NEWTON_PAIR) *
             porewater::opening_loss(params(itype, type[j]).kt, xi_open);
       }
-      d_firsttouch(i, jj) = 0;
-      d_firstxi(i, 3 * jj) = 0.0;
-      d_firstxi(i, 3 * jj + 1) = 0.0;
-      d_firstxi(i, 3 * jj + 2) = 0.0;
+      if (d_firsttouch(i, jj)) {    // most stay apart: no stores (flag 0 means history 0)
+        d_firsttouch(i, jj) = 0;
+        d_firstxi(i, 3 * jj) = 0.0;
+        d_firstxi(i, 3 * jj + 1) = 0.0;
+        d_firstxi(i, 3 * jj + 2) = 0.0;
+      }
       continue;
     }
     d_firsttouch(i, jj) = 1;
     const ContactParams &p = params(itype, type[j]);
+    // velocities are read only for closed contacts (few of the neighbors in a granular flow)
+    const double vi[3] = {v(i, 0), v(i, 1), v(i, 2)};
+    const double wi[3] = {omega(i, 0), omega(i, 1), omega(i, 2)};
     const double vj[3] = {v(j, 0), v(j, 1), v(j, 2)};
     const double wj[3] = {omega(j, 0), omega(j, 1), omega(j, 2)};
     double xi[3] = {d_firstxi(i, 3 * jj), d_firstxi(i, 3 * jj + 1), d_firstxi(i, 3 * jj + 2)};
     const ContactForce c = porewater::linear_coulomb_contact(
-        delx, dely, delz, rsq, radi, radj, vi, vj, wi, wj, p.kn, p.kt, p.mu, lever, UPDATE_HISTORY, dt, xi);
+        delx, dely, delz, rsq, radi, radj, vi, vj, wi, wj, p.kn, p.kt, p.mu, lever, UPDATE_HISTORY,
+        dt, xi, p.frictional);
     if (porewater::contact_is_broken(c.overlap, radi, radj, overlap_limit)) {
       d_broken(0) = tag[i];    // any one broken contact will do for the message
       d_broken(1) = tag[j];
@@ -295,29 +302,41 @@ KOKKOS_INLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
     if (tally_loss)
       ev.ecoul += porewater::pair_share(j, nlocal, NEWTON_PAIR) * porewater::spring_loss(p.kt, c, xi);
 
-    for (int k = 0; k < 3; k++) {
-      fi[k] += c.f[k];
-      ti[k] -= c.lever_i * c.tor[k];
+    closed_any = true;
+    fx_i += c.f[0];
+    fy_i += c.f[1];
+    fz_i += c.f[2];
+    if (p.frictional) {    // a frictionless pair has no torque
+      tx_i -= c.lever_i * c.tor[0];
+      ty_i -= c.lever_i * c.tor[1];
+      tz_i -= c.lever_i * c.tor[2];
     }
     if (NEWTON_PAIR || j < nlocal) {
-      for (int k = 0; k < 3; k++) {
-        a_f(j, k) -= c.f[k];
-        a_torque(j, k) -= c.lever_j * c.tor[k];
+      a_f(j, 0) -= c.f[0];
+      a_f(j, 1) -= c.f[1];
+      a_f(j, 2) -= c.f[2];
+      if (p.frictional) {
+        a_torque(j, 0) -= c.lever_j * c.tor[0];
+        a_torque(j, 1) -= c.lever_j * c.tor[1];
+        a_torque(j, 2) -= c.lever_j * c.tor[2];
       }
     }
     if (EVFLAG)
       tally<NEIGHFLAG, NEWTON_PAIR>(ev, i, j, porewater::contact_energy(p.kn, p.kt, c, xi), c.f,
                                     delx, dely, delz);
   }
-  for (int k = 0; k < 3; k++) {
-    a_f(i, k) += fi[k];
-    a_torque(i, k) += ti[k];
-  }
+  if (!closed_any) return;
+  a_f(i, 0) += fx_i;
+  a_f(i, 1) += fy_i;
+  a_f(i, 2) += fz_i;
+  a_torque(i, 0) += tx_i;
+  a_torque(i, 1) += ty_i;
+  a_torque(i, 2) += tz_i;
 }
 
 template <class DeviceType>
 template <int NEIGHFLAG, int NEWTON_PAIR, int EVFLAG, int UPDATE_HISTORY>
-KOKKOS_INLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
+KOKKOS_FORCEINLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
     TagPairLinearCoulombCompute<NEIGHFLAG, NEWTON_PAIR, EVFLAG, UPDATE_HISTORY> tag,
     const int ii) const
 {

@@ -14,6 +14,22 @@ namespace LAMMPS_NS {
 
 template <class DeviceType> class FixNeighHistoryKokkos;
 
+// LAMMPS' ScatterViewHelper::get returns a copy, made once per grain in the kernel (a view
+// copy and its reference-tracking check); this returns a reference
+template <class Dup> struct ScatterPick;
+template <> struct ScatterPick<Kokkos::Experimental::ScatterDuplicated> {
+  template <class D, class N> KOKKOS_INLINE_FUNCTION static const D &get(const D &dup, const N &)
+  {
+    return dup;
+  }
+};
+template <> struct ScatterPick<Kokkos::Experimental::ScatterNonDuplicated> {
+  template <class D, class N> KOKKOS_INLINE_FUNCTION static const N &get(const D &, const N &nondup)
+  {
+    return nondup;
+  }
+};
+
 template <int NEIGHFLAG, int NEWTON_PAIR, int EVFLAG, int UPDATE_HISTORY>
 struct TagPairLinearCoulombCompute {};
 
@@ -29,19 +45,21 @@ template <class DeviceType> class PairLinearCoulombKokkos : public PairLinearCou
   void init_style() override;
   double init_one(int, int) override;
 
-  // one pass per owned grain: open contacts are cleared, closed ones computed
+  // one pass per owned grain: open contacts are cleared, closed ones computed; force-inlined
+  // into the Kokkos loop, so that the per-grain setup is hoisted out of it
   template <int NEIGHFLAG, int NEWTON_PAIR, int EVFLAG, int UPDATE_HISTORY>
-  KOKKOS_INLINE_FUNCTION void
+  KOKKOS_FORCEINLINE_FUNCTION void
   operator()(TagPairLinearCoulombCompute<NEIGHFLAG, NEWTON_PAIR, EVFLAG, UPDATE_HISTORY>, const int,
              EV_FLOAT &) const;
   template <int NEIGHFLAG, int NEWTON_PAIR, int EVFLAG, int UPDATE_HISTORY>
-  KOKKOS_INLINE_FUNCTION void
+  KOKKOS_FORCEINLINE_FUNCTION void
   operator()(TagPairLinearCoulombCompute<NEIGHFLAG, NEWTON_PAIR, EVFLAG, UPDATE_HISTORY>,
              const int) const;
 
   struct ContactParams {
-    KOKKOS_INLINE_FUNCTION ContactParams() : kn(0.0), kt(0.0), mu(0.0) {}
+    KOKKOS_INLINE_FUNCTION ContactParams() : kn(0.0), kt(0.0), mu(0.0), frictional(0) {}
     double kn, kt, mu;
+    int frictional;    // !porewater::is_frictionless(kt, mu), decided once in init_one()
   };
 
  protected:

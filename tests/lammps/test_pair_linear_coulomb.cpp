@@ -156,10 +156,11 @@ TEST(PairLinearCoulomb, FrictionalEnergyBudgetClosesAtFirstOrder)
 namespace {
 
 // LAMMPS' bench/data.chute cut to 3044 grains (x < 19, y < 4 of a 20 × 5 box, so that no
-// grain overlaps across the new periodic seams), damping off, 1000 steps.
+// grain overlaps across the new periodic seams), damping off, 1000 steps, then `then`.
 std::map<long, std::vector<double>> chute(const std::string &pair_style, const std::string &pair_coeff,
                                           Accel accel = Accel::none, double *ke = nullptr,
-                                          std::vector<std::string> args = {})
+                                          std::vector<std::string> args = {},
+                                          const std::string &then = "")
 {
   Lammps l(accel, MPI_COMM_WORLD, args);
   l.commands("units lj\natom_style sphere\nboundary p p fs\nnewton off\ncomm_modify vel yes\n");
@@ -169,12 +170,13 @@ std::map<long, std::vector<double>> chute(const std::string &pair_style, const s
              "change_box all x final 0 20 y final 0 5 units box\n"
              "reset_atom_ids\n");
   l.command("pair_style " + pair_style);
-  l.command("pair_coeff " + pair_coeff);
+  l.commands("pair_coeff " + pair_coeff + "\n");
   l.commands("neighbor 0.1 bin\nneigh_modify every 1 delay 0\ntimestep 0.0001\n"
              "group bottom type 2\ngroup active subtract all bottom\n"
              "neigh_modify exclude group bottom bottom\n"
              "fix 1 all gravity 1.0 chute 26.0\nfix 2 bottom freeze\nfix 3 active nve/sphere\n"
              "run 1000\n");
+  if (!then.empty()) l.commands(then);
   if (ke) *ke = l.thermo("ke");
   return l.unwrapped();
 }
@@ -202,6 +204,60 @@ TEST(PairLinearCoulomb, LeverRadiusReproducesNativeGranHookeHistory)
               "KE %.6g vs %.6g\n", dx, ke_contact, ke_native);
   EXPECT_GT(dx, 0.0);
   EXPECT_NEAR(ke_contact, ke_native, 0.05 * ke_native);
+}
+
+TEST(PairLinearCoulomb, FrictionlessPairsSkipTheSpringWithoutChangingTheFlow)
+{
+  // μ = 0: native gran/hooke/history integrates the spring and caps it to zero every step,
+  // ours skips it; then friction is switched on (pair_style/pair_coeff again, history kept)
+  // and both go on from the same, empty springs
+  const std::string on = "run 500\n";
+  double ke_native = 0, ke_ours = 0, ke_kk = 0;
+  const auto native = chute("gran/hooke/history 200000.0 200000.0 0.0 0.0 0.0 0", "* *", Accel::none,
+                            &ke_native, {},
+                            "pair_style gran/hooke/history 200000.0 200000.0 0.0 0.0 0.5 0\n" + on);
+  const auto ours = chute("linear/coulomb lever radius", "* * 200000.0 200000.0 0.0", Accel::none,
+                          &ke_ours, {}, "pair_coeff * * 200000.0 200000.0 0.5\n" + on);
+  // same operations on the normal force, a zero tangential force either way: bit-identical
+  // expected, 1e-12 of a diameter as in LeverRadiusReproducesNativeGranHookeHistory
+  EXPECT_LE(pwtest::max_abs_diff(native, ours), 1e-12);
+  EXPECT_DOUBLE_EQ(ke_ours, ke_native);
+  const auto kk = chute("linear/coulomb lever radius", "* * 200000.0 200000.0 0.0", Accel::kokkos,
+                        &ke_kk, {}, "pair_coeff * * 200000.0 200000.0 0.5\n" + on);
+  EXPECT_LE(pwtest::max_abs_diff(ours, kk), 1e-10);    // round-off, as in KokkosEqualsCpu
+
+  // kt = 0: native keeps integrating a spring that exerts no force, ours keeps none
+  const auto native_kt0 = chute("gran/hooke/history 200000.0 0.0 0.0 0.0 0.5 0", "* *");
+  const auto ours_kt0 = chute("linear/coulomb lever radius", "* * 200000.0 0.0 0.5");
+  EXPECT_LE(pwtest::max_abs_diff(native_kt0, ours_kt0), 1e-12);
+}
+
+TEST(PairLinearCoulomb, FrictionlessImpactDissipatesNothing)
+{
+  // μ = 0: no spring is kept, so none is reset and nothing is counted as lost; the energy
+  // residual is then only the normal spring's switching error, bounded by ½k_n(vΔt)² per
+  // switch (budget_bound without its k_t term), where the frictional bound is 1000× larger
+  const double dt = 1e-5, kn = 1e4, v = 1.0;
+  Lammps l;
+  const double res = budget_residual(0.7, 0.0, dt, l);
+  EXPECT_EQ(l.equal("c_pair[1]"), 0.0);
+  EXPECT_LE(std::abs(res), kn * (v * dt) * (v * dt));
+  std::printf("[ report ] frictionless oblique impact: energy residual %.3e\n", res);
+}
+
+TEST(PairLinearCoulomb, KokkosEqualsCpuWithFrictionlessAndFrictionalTypePairs)
+{
+  // per type pair: the flowing grains (type 1) rub each other, slide freely on the base (2)
+  const std::string coeffs = "1 1 200000.0 200000.0 0.5\npair_coeff 1 2 200000.0 200000.0 0.0\n"
+                             "pair_coeff 2 2 200000.0 200000.0 0.5";
+  double ke_cpu = 0, ke_kk = 0, ke_rough = 0;
+  const auto cpu = chute("linear/coulomb", coeffs, Accel::none, &ke_cpu);
+  const auto kk = chute("linear/coulomb", coeffs, Accel::kokkos, &ke_kk);
+  EXPECT_LE(pwtest::max_abs_diff(cpu, kk), 1e-10);    // round-off, as in KokkosEqualsCpu
+  EXPECT_NEAR(ke_kk, ke_cpu, 1e-10 * ke_cpu);
+  // and the frictionless base matters: without friction there the flow is faster
+  chute("linear/coulomb", "* * 200000.0 200000.0 0.5", Accel::none, &ke_rough);
+  EXPECT_GT(ke_cpu, ke_rough);
 }
 
 TEST(PairLinearCoulomb, KokkosEqualsCpu)
