@@ -5,8 +5,10 @@ Part "profile": loop time of the same grains run four ways, interleaved, median 
   granular  bench/in.tidal_granular: pair, floor, gravity, nve/sphere only (what a plain
             LAMMPS granular script does)
   dry       in.tidal_shear -var fluid 0: plate, shear layer, held bottom, outputs, no water
-  wet10     in.tidal_shear -var fluid_every 10: the fluid stepped every 10th grain step
-  wet1      in.tidal_shear: the fluid stepped every grain step (the example's default)
+  wet1      -var fluid_every 1 -var interpolate step: the fluid stepped every grain step
+  wet10     -var interpolate step: the fluid stepped every 10th grain step
+  wet10held in.tidal_shear as it is: every 10th, grain forces interpolated on fluid steps
+            only (`interpolate fluid`), the example's default
   on two scenes: the reduced example (1,200 grains, grid 3x2x4) and a Table S1-sized bed
   (9,600 grains, grid 6x3x6, `-var full 1`; bench/in.replicate_bed builds it from the
   reduced bed, so it runs at the reduced stiffness: the cost of a step does not depend on
@@ -15,7 +17,8 @@ Part "profile": loop time of the same grains run four ways, interleaved, median 
   2.76e8 steps (the 59 s the original ran).
 Part "every": error of the tidal_shear time series against the fluid stepped every grain
   step, for every N = 2 ... 50 over --horizon grain steps from the shipped state: top-layer
-  velocity and displacement, plate position, mean pore pressure. A second every-1 run with
+  velocity and displacement, plate position, mean pore pressure (also every 10 and 50 with
+  `interpolate fluid`). A second every-1 run with
   a 100x tighter solver tolerance gives the floor below which differences are the
   chaotic growth of round-off, not the fluid step.
 
@@ -23,7 +26,8 @@ Part "long": one long run of the reduced example (--long-steps, default 1e6 grai
   2.1 forcing cycles) on --ranks MPI ranks: every sampled value finite, the grains' kinetic
   energy bounded (largest value in each forcing cycle), the plate within the bed's range,
   and fix darcy/pressure's fluid balance (stored = inflow + grain source) closing: its
-  residual against the allowance the solver tolerance permits.
+  residual against the allowance the solver tolerance permits. --closed: the same with a
+  closed box (`top noflow`) and tol 1e-13, where the residual is round-off.
 
 Usage (after scripts/setup.sh):  source scripts/env.sh
     /usr/bin/python3 bench/tidal_profile.py [--part profile|every|all] [--repeat 3]
@@ -42,8 +46,9 @@ STEPS_S1 = {"45 s analysed": 45.0 / 2.14e-7, "59 s run": 59.0 / 2.14e-7}
 VARIANTS = {  # name: (input, extra variables)
     "granular": ("in.tidal_granular", {}),
     "dry": ("in.tidal_shear", {"fluid": 0}),
-    "wet10": ("in.tidal_shear", {"fluid_every": 10}),
-    "wet1": ("in.tidal_shear", {}),
+    "wet10": ("in.tidal_shear", {"fluid_every": 10, "interpolate": "step"}),
+    "wet10held": ("in.tidal_shear", {"fluid_every": 10, "interpolate": "fluid"}),
+    "wet1": ("in.tidal_shear", {"fluid_every": 1, "interpolate": "step"}),
 }
 
 
@@ -100,7 +105,7 @@ def profile(workdir, steps, repeat, report):
     report.append("| ranks | variant | " + " | ".join(STEPS_S1) + " |")
     report.append("|---|---|" + "---|" * len(STEPS_S1))
     for ranks in (1, 2):
-        for v in ("wet1", "wet10", "granular"):
+        for v in ("wet1", "wet10", "wet10held", "granular"):
             days = [per_step[("Table S1 size", ranks, v)] * n / 86400 for n in STEPS_S1.values()]
             report.append(f"| {ranks} | {v} | " + " | ".join(f"{d:.1f} days" for d in days) + " |")
     report.append("")
@@ -112,11 +117,14 @@ def read_series(path):
     return {n: data[:, k] for k, n in enumerate(names)}
 
 
-def every_sweep(workdir, horizon, report):
-    cases = [("every 1 (reference)", {"fluid_every": 1})]
-    cases += [(f"every {n}", {"fluid_every": n}) for n in (2, 5, 10, 20, 50)]
+def every_sweep(workdir, horizon, ranks, report):
+    cases = [("every 1 (reference)", {"fluid_every": 1, "interpolate": "step"})]
+    cases += [(f"every {n}", {"fluid_every": n, "interpolate": "step"}) for n in (2, 5, 10, 20, 50)]
+    cases += [(f"every {n}, interpolate fluid", {"fluid_every": n, "interpolate": "fluid"})
+              for n in (10, 50)]
     results = {}
-    for name, variables in cases + [("every 1, tol 1e-12 (chaos floor)", {"fluid_every": 1})]:
+    floor = ("every 1, tol 1e-12 (chaos floor)", {"fluid_every": 1, "interpolate": "step"})
+    for name, variables in cases + [floor]:
         run_dir = os.path.join(workdir, re.sub(r"\W+", "_", name))
         os.makedirs(run_dir)
         for f in os.listdir(workdir):
@@ -124,15 +132,15 @@ def every_sweep(workdir, horizon, report):
                 shutil.copy(os.path.join(workdir, f), run_dir)
         if "1e-12" in name:  # the example's fix line gains a tighter tolerance
             src = open(os.path.join(run_dir, "in.tidal_shear")).read()
-            src = src.replace("every ${fluid_every} &", "every ${fluid_every} tol 1e-12 &")
+            src = src.replace("interpolate ${interpolate} &", "interpolate ${interpolate} tol 1e-12 &")
             open(os.path.join(run_dir, "in.tidal_shear"), "w").write(src)
-        t = run_lmp(run_dir, "in.tidal_shear", dict(variables, run_steps=horizon, samples=2000))
+        t = run_lmp(run_dir, "in.tidal_shear", dict(variables, run_steps=horizon, samples=2000), ranks)
         results[name] = (t, read_series(os.path.join(run_dir, "timeseries.txt")))
         print(name, f"{t:.1f} s", flush=True)
     t_ref, ref = results[cases[0][0]]
     amp = 70.0e3
     report.append("## Part 2: error of `every N` on the tidal_shear time series\n")
-    report.append(f"{horizon} grain steps from the shipped state (t = 0 to "
+    report.append(f"{horizon} grain steps on {ranks} MPI rank(s) from the shipped state (t = 0 to "
                   f"{ref['time'][-1]:.3f} s), 2,000 samples per cycle. Errors are the maximum "
                   "over the samples of the difference to `every 1`: top-layer velocity relative "
                   "to the maximum |vx_top| of the reference, displacement relative to the "
@@ -157,12 +165,16 @@ def balance_ratio(s, m):
     return np.max(np.abs(s["fluid_balance"][m]) / s["balance_allowance"][m]) if m.any() else 0.0
 
 
-def long_run(workdir, steps, ranks, report):
+def long_run(workdir, steps, ranks, closed, report):
+    if closed:  # no flow through the top either, and a solve converged to round-off
+        src = open(os.path.join(workdir, "in.tidal_shear")).read()
+        src = src.replace("top v_ptop ztop v_zwall", "top noflow tol 1e-13")
+        open(os.path.join(workdir, "in.tidal_shear"), "w").write(src)
     t = run_lmp(workdir, "in.tidal_shear", {"run_steps": steps}, ranks)
     s = read_series(os.path.join(workdir, "timeseries.txt"))
     values = np.column_stack(list(s.values()))
     cycle = np.floor(s["time"] * 1.0).astype(int)  # reduced case: f = 1 Hz
-    report.append("## Part 3: a long run\n")
+    report.append("## Part 3: a long run" + (" in a closed box (top noflow, tol 1e-13)" if closed else "") + "\n")
     report.append(f"{steps} grain steps of the reduced example (t = 0 to {s['time'][-1]:.3f} s) "
                   f"on {ranks} MPI rank(s): loop time {t:.0f} s, {len(s['time'])} samples, "
                   f"all finite: {bool(np.all(np.isfinite(values)))}.\n")
@@ -174,15 +186,18 @@ def long_run(workdir, steps, ranks, report):
                       f"{np.max(s['z_wall'][m]):.4f} | {np.max(np.abs(s['p_mean'][m])) / 70e3:.3f} | "
                       f"{np.max(s['solver_iters'][m]):.0f} | "
                       f"{balance_ratio(s, m):.1e} |")
-    report.append("")
-    shutil.copy(os.path.join(workdir, "timeseries.txt"), os.path.join(HERE, "long_run_timeseries.txt"))
+    stored = np.max(np.abs(s["fluid_stored"]))
+    report.append(f"\nAt the end: balance residual {s['fluid_balance'][-1]:.3e} m³, "
+                  f"{abs(s['fluid_balance'][-1]) / stored:.1e} of the largest stored change "
+                  f"({stored:.3e} m³).\n")
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--part", choices=["profile", "every", "long", "all"], default="all")
     ap.add_argument("--long-steps", type=int, default=1000000)
-    ap.add_argument("--ranks", type=int, default=2)
+    ap.add_argument("--closed", action="store_true", help="part long in a closed box")
+    ap.add_argument("--ranks", type=int, default=2, help="MPI ranks of parts every and long")
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--steps", type=int, default=10000)
     ap.add_argument("--horizon", type=int, default=47000)
@@ -196,9 +211,9 @@ def main():
         if args.part in ("profile", "all"):
             profile(workdir, args.steps, args.repeat, report)
         if args.part in ("every", "all"):
-            every_sweep(workdir, args.horizon, report)
+            every_sweep(workdir, args.horizon, args.ranks, report)
         if args.part == "long":
-            long_run(workdir, args.long_steps, args.ranks, report)
+            long_run(workdir, args.long_steps, args.ranks, args.closed, report)
     open(args.out, "w").write("\n".join(report) + "\n")
     print("wrote", args.out)
 

@@ -18,6 +18,7 @@
 #include "input.h"
 #include "memory.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "update.h"
 #include "variable.h"
 
@@ -40,7 +41,7 @@ const int BLOCK_GRADIENT = 32;    // per stencil block: 8 corners of 3 component
 FixDarcyPressure::FixDarcyPressure(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), layout{0}, rho_g{0.0, 0.0, 0.0}, gradient_changed(true),
     fluid_force(nullptr), maxatom(0), blocks{0, 0, 0}, stencils_step(-1), stencils_nlocal(0),
-    started(false), last_fluid_step(0),
+    force_step(-1), force_nlocal(0), started(false), last_fluid_step(0),
     last_solve{true, 0, 0.0, 0.0, -1}, porosity_warned(false), profile_fp(nullptr),
     last_profile_step(-1), last_vtk_step(-1)
 {
@@ -137,15 +138,40 @@ void FixDarcyPressure::setup(int /*vflag*/)
 {
   porosity_warned = false;
   if (!started) start_fluid();
-  apply_fluid_force();
+  apply_or_hold_fluid_force(true);
   write_output();
 }
 
 void FixDarcyPressure::post_force(int /*vflag*/)
 {
-  if (update->ntimestep - last_fluid_step >= settings.every) advance_fluid();
-  apply_fluid_force();
+  const bool fluid_step = update->ntimestep - last_fluid_step >= settings.every;
+  if (fluid_step) advance_fluid();
+  apply_or_hold_fluid_force(fluid_step);
   write_output();
+}
+
+// `interpolate step`: -V grad p at every grain's position every step. `interpolate fluid`:
+// only on fluid steps, and again whenever LAMMPS has re-neighbored since (the per-atom
+// forces are indexed by local atom, which migrate and are sorted only then); held between.
+void FixDarcyPressure::apply_or_hold_fluid_force(bool fluid_step)
+{
+  const bool held_valid = !settings.interpolate_every_step && force_step >= 0 &&
+      force_step >= neighbor->lastcall && force_nlocal == atom->nlocal;
+  if (!fluid_step && held_valid) {
+    add_held_fluid_force();
+    return;
+  }
+  apply_fluid_force();
+  force_step = update->ntimestep;
+  force_nlocal = atom->nlocal;
+}
+
+void FixDarcyPressure::add_held_fluid_force()
+{
+  double **f = atom->f;
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; ++i)
+    for (int d = 0; d < 3; ++d) f[i][d] += fluid_force[i][d];
 }
 
 /* ----------------------------------------------------------------------

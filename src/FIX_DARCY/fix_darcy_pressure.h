@@ -39,6 +39,8 @@ class FixDarcyPressure : public Fix {
   virtual void deposit_grains(double interval);
   // f += fluid force on every grain of the group, also stored in fluid_force
   virtual void apply_fluid_force();
+  // f += fluid_force (zero outside the group): `interpolate fluid` between fluid steps
+  virtual void add_held_fluid_force();
   virtual void grow_fluid_force(int nmax);
   // called before equal-style variables are evaluated (they read host data)
   virtual void sync_for_variables() {}
@@ -66,6 +68,7 @@ class FixDarcyPressure : public Fix {
   void check_solution();
   void write_output();
   std::string describe_cell(int cell) const;
+  void apply_or_hold_fluid_force(bool fluid_step);
 
   // CPU deposits and force interpolation per stencil block (porewater::StencilBlocks):
   // deposits summed per block and corner, [quantity (5)][corner (8)] a block, then folded
@@ -81,6 +84,11 @@ class FixDarcyPressure : public Fix {
   std::vector<double> grain_weights;
   bigint stencils_step;    // the step deposit_grains stored them in, -1: none
   int stencils_nlocal;
+
+  // `interpolate fluid`: the step fluid_force was last interpolated in and for how many
+  // local atoms; valid until LAMMPS re-neighbors (atoms migrate or are sorted only then)
+  bigint force_step;
+  int force_nlocal;
 
   bool started;              // the fluid state exists (first setup done, or restarted)
   bigint last_fluid_step;    // timestep of the last fluid step (or of the first setup)

@@ -73,6 +73,17 @@ template <class DeviceType> struct ApplyFluidForce {
   }
 };
 
+template <class DeviceType> struct AddHeldForce {
+  typedef ArrayTypes<DeviceType> AT;
+  typename AT::t_f_array f;
+  typename AT::t_ffloat_2d fluid_force;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
+  {
+    for (int d = 0; d < 3; ++d) f(i, d) += fluid_force(i, d);
+  }
+};
+
 }    // namespace
 
 /* ---------------------------------------------------------------------- */
@@ -148,6 +159,17 @@ template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::apply_fluid
   // dumps and computes read the per-atom array on the host (no copy when they share memory)
   k_fluid_force.template modify<DeviceType>();
   k_fluid_force.template sync<LMPHostType>();
+}
+
+template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::add_held_fluid_force()
+{
+  atomKK->sync(execution_space, F_MASK);
+  k_fluid_force.template sync<DeviceType>();
+  AddHeldForce<DeviceType> add{atomKK->k_f.view<DeviceType>(),
+                               k_fluid_force.template view<DeviceType>()};
+  Kokkos::parallel_for("darcy/pressure:held force",
+                       Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), add);
+  atomKK->modified(execution_space, F_MASK);
 }
 
 template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::grow_fluid_force(int nmax)

@@ -24,6 +24,7 @@ template <class DeviceType> class FixDarcyPressureKokkos : public FixDarcyPressu
  protected:
   void deposit_grains(double interval) override;
   void apply_fluid_force() override;
+  void add_held_fluid_force() override;
   void grow_fluid_force(int nmax) override;
   void sync_for_variables() override;
 

@@ -182,6 +182,13 @@ DarcyFixSettings LAMMPS_NS::parse_darcy_fix_settings(LAMMPS *lmp, int narg, char
       read.need(i, 1, "every N");
       s.every = read.count(i + 1, "every");
       i += 2;
+    } else if (key == "interpolate") {
+      read.need(i, 1, "interpolate step|fluid");
+      const std::string when = arg[i + 1];
+      if (when != "step" && when != "fluid")
+        error->all(FLERR, "{}: interpolate must be step or fluid, got {}", STYLE, when);
+      s.interpolate_every_step = when == "step";
+      i += 2;
     } else if (key == "zhi") {
       read.need(i, 1, "zhi Z");
       s.zhi = read.real(i + 1, "zhi", "a z coordinate above the box bottom");
@@ -199,7 +206,7 @@ DarcyFixSettings LAMMPS_NS::parse_darcy_fix_settings(LAMMPS *lmp, int narg, char
     } else {
       error->all(FLERR, "{}: unknown keyword {} (expected grid, viscosity, compressibility, "
                  "density, permeability, top, ztop, bottom, initial, gravity, porosity, kmax, "
-                 "tol, atol, maxiter, every, zhi, profile, vtk)", STYLE, key);
+                 "tol, atol, maxiter, every, interpolate, zhi, profile, vtk)", STYLE, key);
     }
   }
   if (!s.grid[0] || !have_viscosity || !have_beta || !have_density || !have_kc)

@@ -36,6 +36,7 @@ struct DarcyFixSettings {
   bool bottom_dirichlet = false;
   double initial_pressure = 0.0;
   int every = 1;                     // fluid step every this many grain steps
+  bool interpolate_every_step = true;  // false: grain forces held between fluid steps
   int profile_every = 0;             // 0: no profile file
   std::string profile_path;
   int vtk_every = 0;                 // 0: no VTK files
