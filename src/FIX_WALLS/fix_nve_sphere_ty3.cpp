@@ -105,15 +105,17 @@ void FixNVESphereTY3::initial_integrate(int /*vflag*/)
   double **x = atom->x;
   double **v = atom->v;
   double **omega = atom->omega;
+  double **f = atom->f, **torque = atom->torque;
+  const double *rmass = atom->rmass, *radius = atom->radius;
   const int *mask = atom->mask;
   int nlocal = atom->nlocal;
   if (igroup == atom->firstgroup) nlocal = atom->nfirst;
-  const double dt = update->dt;
+  const double dt = update->dt, ftm2v = force->ftm2v;
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     double a[3], alpha[3];
-    accelerations(i, a, alpha);
+    porewater::sphere_accelerations(ftm2v, rmass[i], radius[i], f[i], torque[i], a, alpha);
     porewater::ty3_predict_grain(x[i], v[i], omega[i], a, alpha, dt, corrector, history[i]);
   }
   dt_of_history = dt;
@@ -123,27 +125,18 @@ void FixNVESphereTY3::final_integrate()
 {
   double **v = atom->v;
   double **omega = atom->omega;
+  double **f = atom->f, **torque = atom->torque;
+  const double *rmass = atom->rmass, *radius = atom->radius;
   const int *mask = atom->mask;
   int nlocal = atom->nlocal;
   if (igroup == atom->firstgroup) nlocal = atom->nfirst;
-  const double dt = update->dt;
+  const double dt = update->dt, ftm2v = force->ftm2v;
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     double a[3], alpha[3];
-    accelerations(i, a, alpha);
+    porewater::sphere_accelerations(ftm2v, rmass[i], radius[i], f[i], torque[i], a, alpha);
     porewater::ty3_correct_grain(v[i], omega[i], a, alpha, dt, history[i]);
-  }
-}
-
-// a = f/m and α = T/I of local atom i
-void FixNVESphereTY3::accelerations(int i, double *a, double *alpha) const
-{
-  const double to_a = force->ftm2v / atom->rmass[i];
-  const double to_alpha = to_a / (INERTIA * atom->radius[i] * atom->radius[i]);
-  for (int k = 0; k < 3; k++) {
-    a[k] = to_a * atom->f[i][k];
-    alpha[k] = to_alpha * atom->torque[i][k];
   }
 }
 

@@ -34,13 +34,11 @@ class FixNVESphereTY3 : public Fix {
   int maxsize_restart() override;
 
  protected:
-  static constexpr double INERTIA = 0.4;    // I = 2/5 m r² (solid sphere)
   int corrector;           // 1: Adams–Moulton velocity correction in final_integrate
   int ncols;               // porewater::TY3_COLUMNS(_CORRECTOR)
   double **history;        // per atom: a row of porewater::Ty3Column
   double dt_of_history;    // the history holds accelerations one step of this size apart
 
-  void accelerations(int i, double *a, double *alpha) const;
   virtual void forget_history();
 };
 

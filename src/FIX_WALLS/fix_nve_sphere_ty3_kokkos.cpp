@@ -27,17 +27,13 @@ template <class DeviceType> struct TY3Grains {
   typename AT::t_int_1d_randomread mask;
   typename AT::t_float_2d history;
   int groupbit, corrector;
-  double dt, ftm2v, inertia;
+  double dt, ftm2v;
 
-  // a = f/m and α = T/I of grain i
   KOKKOS_INLINE_FUNCTION void accelerations(const int i, double *a, double *alpha) const
   {
-    const double to_a = ftm2v / rmass(i);
-    const double to_alpha = to_a / (inertia * radius(i) * radius(i));
-    for (int k = 0; k < 3; k++) {
-      a[k] = to_a * f(i, k);
-      alpha[k] = to_alpha * torque(i, k);
-    }
+    const double fi[3] = {f(i, 0), f(i, 1), f(i, 2)};
+    const double ti[3] = {torque(i, 0), torque(i, 1), torque(i, 2)};
+    porewater::sphere_accelerations(ftm2v, rmass(i), radius(i), fi, ti, a, alpha);
   }
 };
 
@@ -85,8 +81,7 @@ template <class DeviceType> struct TY3Correct : TY3Grains<DeviceType> {
 // the grain views and step constants both hooks hand to their kernel
 template <class DeviceType>
 TY3Grains<DeviceType> grain_data(AtomKokkos *atomKK, const DAT::tdual_float_2d &k_history,
-                                 int groupbit, int corrector, double dt, double ftm2v,
-                                 double inertia)
+                                 int groupbit, int corrector, double dt, double ftm2v)
 {
   TY3Grains<DeviceType> g;
   g.x = atomKK->k_x.view<DeviceType>();
@@ -102,7 +97,6 @@ TY3Grains<DeviceType> grain_data(AtomKokkos *atomKK, const DAT::tdual_float_2d &
   g.corrector = corrector;
   g.dt = dt;
   g.ftm2v = ftm2v;
-  g.inertia = inertia;
   return g;
 }
 
@@ -144,7 +138,7 @@ template <class DeviceType> void FixNVESphereTY3Kokkos<DeviceType>::initial_inte
                    MASK_MASK);
   k_history.template sync<DeviceType>();
   const TY3Predict<DeviceType> step(grain_data<DeviceType>(atomKK, k_history, groupbit, corrector,
-                                                          update->dt, force->ftm2v, INERTIA));
+                                                          update->dt, force->ftm2v));
   int nlocal = atom->nlocal;
   if (igroup == atom->firstgroup) nlocal = atom->nfirst;
   Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), step);
@@ -159,7 +153,7 @@ template <class DeviceType> void FixNVESphereTY3Kokkos<DeviceType>::final_integr
                V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | RMASS_MASK | RADIUS_MASK | MASK_MASK);
   k_history.template sync<DeviceType>();
   const TY3Correct<DeviceType> step(grain_data<DeviceType>(atomKK, k_history, groupbit, corrector,
-                                                          update->dt, force->ftm2v, INERTIA));
+                                                          update->dt, force->ftm2v));
   int nlocal = atom->nlocal;
   if (igroup == atom->firstgroup) nlocal = atom->nfirst;
   Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), step);

@@ -8,6 +8,20 @@
 
 namespace porewater {
 
+// a = f/m and α = T/I of a solid sphere (I = 2/5 m r²); ftm2v converts force/mass to the
+// unit style's acceleration
+PW_INLINE void sphere_accelerations(const double ftm2v, const double mass, const double radius,
+                                    const double *f, const double *torque, double *a,
+                                    double *alpha)
+{
+  const double to_a = ftm2v / mass;
+  const double to_alpha = to_a / (0.4 * radius * radius);
+  for (int k = 0; k < 3; k++) {
+    a[k] = to_a * f[k];
+    alpha[k] = to_alpha * torque[k];
+  }
+}
+
 // x ← x + vΔt + ½aΔt² + ⅙ȧΔt³
 PW_INLINE double ty3_displacement(const double v, const double a, const double a_prev,
                                   const double dt)
