@@ -7,6 +7,8 @@
 
 #include "fix.h"
 
+#include "analytic_solutions.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -58,17 +60,6 @@ void empty_column(Lammps &l, double height)
 const std::string unit_diffusivity =
     " viscosity 1 compressibility 1 density 1 permeability 1 kmax 0.9";
 
-// Terzaghi: uniform p0, drained top at z = H, no-flow bottom, z from the bottom
-double terzaghi(double p0, double z, double height, double diffusivity, double t)
-{
-  double p = 0.0;
-  for (int m = 0; m < 400; ++m) {
-    const double M = (2 * m + 1) * PI / 2;
-    p += 2 * p0 / M * std::sin(M) * std::cos(M * z / height) *
-        std::exp(-M * M * diffusivity * t / (height * height));
-  }
-  return p;
-}
 
 // the blocks of a profile file: step -> per layer {z, p, phi, k, vbar_z}
 std::map<long, std::vector<std::vector<double>>> read_profile(const std::string &path)
@@ -221,8 +212,8 @@ TEST(FixDarcyPressure, TerzaghiThroughTheFixUsesTimestepAndEvery)
     const auto &rows = blocks.at(steps[s]);
     ASSERT_EQ(rows.size(), (size_t) nz);
     for (const auto &row : rows)
-      worst[s] = std::max(worst[s], std::fabs(row[1] - terzaghi(1.0, row[0], 1.0, 1.0,
-                                                                 steps[s] * 1e-4)));
+      worst[s] = std::max(worst[s], std::fabs(row[1] - pwtest::terzaghi(1.0, row[0], 1.0, 1.0,
+                                                                         steps[s] * 1e-4)));
   }
   // the profile holds the fix's state: layer means of the extracted field, to print digits
   EXPECT_NEAR(blocks.at(2000)[7][1], 0.5 * (by_every[14] + by_every[15]), 1e-15);

@@ -3,6 +3,8 @@
 // dphi/dt and restart.
 #include "darcy_solver.h"
 
+#include "analytic_solutions.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -52,17 +54,6 @@ double max_abs(const std::vector<double> &v)
   return m;
 }
 
-// Terzaghi: uniform p0, drained top at z = H, no-flow bottom (z from the bottom).
-double terzaghi(double p0, double z, double height, double diffusivity, double t)
-{
-  double p = 0.0;
-  for (int m = 0; m < 400; ++m) {
-    const double M = (2 * m + 1) * pi / 2;
-    p += 2 * p0 / M * std::sin(M) * std::cos(M * z / height) *
-        std::exp(-M * M * diffusivity * t / (height * height));
-  }
-  return p;
-}
 
 // Fill solid_volume so that every cell has the given porosity, and update.
 void set_porosity(DarcySolver &s, const std::vector<double> &porosity)
@@ -157,8 +148,8 @@ TEST(DarcySolver, TerzaghiConsolidationSecondOrder)
       for (; done < target; ++done) ASSERT_TRUE(s.step(dt, 0.0).converged);
       double e = 0.0;
       for (int k = 0; k < nz; ++k)
-        e = std::max(e, std::fabs(s.pressure()[k] - terzaghi(p0, z_centre(g, k), height, 1.0,
-                                                             done * dt)));
+        e = std::max(e, std::fabs(s.pressure()[k] -
+                                  pwtest::terzaghi(p0, z_centre(g, k), height, 1.0, done * dt)));
       error[gi][ti] = e / p0;
     }
   }
