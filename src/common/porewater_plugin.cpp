@@ -19,6 +19,9 @@
 #include "pair_linear_coulomb.h"
 #include "pair_linear_coulomb_kokkos.h"
 
+#include <list>
+#include <string>
+
 using namespace LAMMPS_NS;
 
 namespace {
@@ -33,19 +36,54 @@ template <class T> Fix *fix_creator(LAMMPS *lmp, int narg, char **arg)
   return new T(lmp, narg, arg);
 }
 
+// LAMMPS keeps the name and info pointers of every registered style: they must outlive
+// the plugin's registration, so the composed `/kk` names live here.
+std::list<std::string> &style_strings()
+{
+  static std::list<std::string> strings;
+  return strings;
+}
+
+const char *kept(const std::string &text)
+{
+  style_strings().push_back(text);
+  return style_strings().back().c_str();
+}
+
 struct Registrar {
   void *lmp;
   lammpsplugin_regfunc register_plugin;
   void *handle;
-  void add(const char *style, const char *name, const char *info, lammpsplugin_factory1 *creator)
+
+  // `name` builds the CPU class; `name/kk` the default-device KOKKOS class, `name/kk/device`
+  // and `name/kk/host` as in LAMMPS' own KOKKOS package
+  template <class Cpu, template <class> class Kokkos_>
+  void add_pair(const char *name, const char *info)
   {
-    add_any(style, name, info, (void *) creator, false);
+    add_family(
+        "pair", name, info, (void *) &pair_creator<Cpu>,
+        (void *) &pair_creator<Kokkos_<LMPDeviceType>>,
+        (void *) &pair_creator<Kokkos_<LMPHostType>>, false);
   }
-  void add(const char *style, const char *name, const char *info, lammpsplugin_factory2 *creator)
+  template <class Cpu, template <class> class Kokkos_>
+  void add_fix(const char *name, const char *info)
   {
-    add_any(style, name, info, (void *) creator, true);
+    add_family("fix", name, info, (void *) &fix_creator<Cpu>,
+               (void *) &fix_creator<Kokkos_<LMPDeviceType>>,
+               (void *) &fix_creator<Kokkos_<LMPHostType>>, true);
   }
-  void add_any(const char *style, const char *name, const char *info, void *creator, bool v2)
+
+ private:
+  void add_family(const char *style, const char *name, const char *info, void *cpu,
+                  void *device, void *host, bool v2)
+  {
+    const std::string kk = std::string(name) + "/kk", kk_info = std::string(name) + ", KOKKOS";
+    add(style, name, info, cpu, v2);
+    add(style, kept(kk), kept(kk_info), device, v2);
+    add(style, kept(kk + "/device"), kept(kk_info + " device"), device, v2);
+    add(style, kept(kk + "/host"), kept(kk_info + " host"), host, v2);
+  }
+  void add(const char *style, const char *name, const char *info, void *creator, bool v2)
   {
     lammpsplugin_t plugin;
     plugin.version = LAMMPS_VERSION;
@@ -67,50 +105,14 @@ struct Registrar {
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
 {
   Registrar r{lmp, (lammpsplugin_regfunc) regfunc, handle};
-
-  // `name/kk` builds the default-device class, `name/kk/device` and `name/kk/host` as in
-  // LAMMPS' own KOKKOS package
-  r.add("pair", "linear/coulomb", "linear spring + Coulomb friction contacts, no damping",
-        (lammpsplugin_factory1 *) &pair_creator<PairLinearCoulomb>);
-  r.add("pair", "linear/coulomb/kk", "linear/coulomb, KOKKOS",
-        (lammpsplugin_factory1 *) &pair_creator<PairLinearCoulombKokkos<LMPDeviceType>>);
-  r.add("pair", "linear/coulomb/kk/device", "linear/coulomb, KOKKOS device",
-        (lammpsplugin_factory1 *) &pair_creator<PairLinearCoulombKokkos<LMPDeviceType>>);
-  r.add("pair", "linear/coulomb/kk/host", "linear/coulomb, KOKKOS host",
-        (lammpsplugin_factory1 *) &pair_creator<PairLinearCoulombKokkos<LMPHostType>>);
-
-  // fixes: r.add("fix", "name", "info", (lammpsplugin_factory2 *) &fix_creator<FixClass>);
-  r.add("fix", "wall/stress", "stress-controlled frictionless top wall with mass",
-        (lammpsplugin_factory2 *) &fix_creator<FixWallStress>);
-  r.add("fix", "wall/stress/kk", "wall/stress, KOKKOS",
-        (lammpsplugin_factory2 *) &fix_creator<FixWallStressKokkos<LMPDeviceType>>);
-  r.add("fix", "wall/stress/kk/device", "wall/stress, KOKKOS device",
-        (lammpsplugin_factory2 *) &fix_creator<FixWallStressKokkos<LMPDeviceType>>);
-  r.add("fix", "wall/stress/kk/host", "wall/stress, KOKKOS host",
-        (lammpsplugin_factory2 *) &fix_creator<FixWallStressKokkos<LMPHostType>>);
-  r.add("fix", "shear/stress", "top layer as a rigid plate driven by a shear stress",
-        (lammpsplugin_factory2 *) &fix_creator<FixShearStress>);
-  r.add("fix", "shear/stress/kk", "shear/stress, KOKKOS",
-        (lammpsplugin_factory2 *) &fix_creator<FixShearStressKokkos<LMPDeviceType>>);
-  r.add("fix", "shear/stress/kk/device", "shear/stress, KOKKOS device",
-        (lammpsplugin_factory2 *) &fix_creator<FixShearStressKokkos<LMPDeviceType>>);
-  r.add("fix", "shear/stress/kk/host", "shear/stress, KOKKOS host",
-        (lammpsplugin_factory2 *) &fix_creator<FixShearStressKokkos<LMPHostType>>);
-  r.add("fix", "nve/sphere/ty3", "third-order Taylor integrator of finite-size spheres",
-        (lammpsplugin_factory2 *) &fix_creator<FixNVESphereTY3>);
-  r.add("fix", "nve/sphere/ty3/kk", "nve/sphere/ty3, KOKKOS",
-        (lammpsplugin_factory2 *) &fix_creator<FixNVESphereTY3Kokkos<LMPDeviceType>>);
-  r.add("fix", "nve/sphere/ty3/kk/device", "nve/sphere/ty3, KOKKOS device",
-        (lammpsplugin_factory2 *) &fix_creator<FixNVESphereTY3Kokkos<LMPDeviceType>>);
-  r.add("fix", "nve/sphere/ty3/kk/host", "nve/sphere/ty3, KOKKOS host",
-        (lammpsplugin_factory2 *) &fix_creator<FixNVESphereTY3Kokkos<LMPHostType>>);
-
-  r.add("fix", "darcy/pressure", "pore-water pressure on a Darcy grid, force on grains",
-        (lammpsplugin_factory2 *) &fix_creator<FixDarcyPressure>);
-  r.add("fix", "darcy/pressure/kk", "darcy/pressure, KOKKOS",
-        (lammpsplugin_factory2 *) &fix_creator<FixDarcyPressureKokkos<LMPDeviceType>>);
-  r.add("fix", "darcy/pressure/kk/device", "darcy/pressure, KOKKOS device",
-        (lammpsplugin_factory2 *) &fix_creator<FixDarcyPressureKokkos<LMPDeviceType>>);
-  r.add("fix", "darcy/pressure/kk/host", "darcy/pressure, KOKKOS host",
-        (lammpsplugin_factory2 *) &fix_creator<FixDarcyPressureKokkos<LMPHostType>>);
+  r.add_pair<PairLinearCoulomb, PairLinearCoulombKokkos>(
+      "linear/coulomb", "linear spring + Coulomb friction contacts, no damping");
+  r.add_fix<FixWallStress, FixWallStressKokkos>(
+      "wall/stress", "stress-controlled frictionless top wall with mass");
+  r.add_fix<FixShearStress, FixShearStressKokkos>(
+      "shear/stress", "top layer as a rigid plate driven by a shear stress");
+  r.add_fix<FixNVESphereTY3, FixNVESphereTY3Kokkos>(
+      "nve/sphere/ty3", "third-order Taylor integrator of finite-size spheres");
+  r.add_fix<FixDarcyPressure, FixDarcyPressureKokkos>(
+      "darcy/pressure", "pore-water pressure on a Darcy grid, force on grains");
 }
