@@ -100,44 +100,40 @@ void FixNVESphereTY3::init()
 
 /* ---------------------------------------------------------------------- */
 
-void FixNVESphereTY3::initial_integrate(int /*vflag*/)
+// step(i, a, alpha) for every local grain of the group, with a = f/m and α = T/I
+template <class Step> void FixNVESphereTY3::each_grain(Step step)
 {
-  double **x = atom->x;
-  double **v = atom->v;
-  double **omega = atom->omega;
   double **f = atom->f, **torque = atom->torque;
   const double *rmass = atom->rmass, *radius = atom->radius;
   const int *mask = atom->mask;
   int nlocal = atom->nlocal;
   if (igroup == atom->firstgroup) nlocal = atom->nfirst;
-  const double dt = update->dt, ftm2v = force->ftm2v;
-
+  const double ftm2v = force->ftm2v;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     double a[3], alpha[3];
     porewater::sphere_accelerations(ftm2v, rmass[i], radius[i], f[i], torque[i], a, alpha);
-    porewater::ty3_predict_grain(x[i], v[i], omega[i], a, alpha, dt, corrector, history[i]);
+    step(i, a, alpha);
   }
+}
+
+void FixNVESphereTY3::initial_integrate(int /*vflag*/)
+{
+  double **x = atom->x, **v = atom->v, **omega = atom->omega;
+  const double dt = update->dt;
+  each_grain([&](int i, const double *a, const double *alpha) {
+    porewater::ty3_predict_grain(x[i], v[i], omega[i], a, alpha, dt, corrector, history[i]);
+  });
   dt_of_history = dt;
 }
 
 void FixNVESphereTY3::final_integrate()
 {
-  double **v = atom->v;
-  double **omega = atom->omega;
-  double **f = atom->f, **torque = atom->torque;
-  const double *rmass = atom->rmass, *radius = atom->radius;
-  const int *mask = atom->mask;
-  int nlocal = atom->nlocal;
-  if (igroup == atom->firstgroup) nlocal = atom->nfirst;
-  const double dt = update->dt, ftm2v = force->ftm2v;
-
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    double a[3], alpha[3];
-    porewater::sphere_accelerations(ftm2v, rmass[i], radius[i], f[i], torque[i], a, alpha);
+  double **v = atom->v, **omega = atom->omega;
+  const double dt = update->dt;
+  each_grain([&](int i, const double *a, const double *alpha) {
     porewater::ty3_correct_grain(v[i], omega[i], a, alpha, dt, history[i]);
-  }
+  });
 }
 
 void FixNVESphereTY3::reset_dt()

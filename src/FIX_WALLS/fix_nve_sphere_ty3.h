@@ -40,6 +40,9 @@ class FixNVESphereTY3 : public Fix {
   double dt_of_history;    // the history holds accelerations one step of this size apart
 
   virtual void forget_history();
+
+ private:
+  template <class Step> void each_grain(Step step);
 };
 
 }    // namespace LAMMPS_NS
