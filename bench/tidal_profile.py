@@ -111,6 +111,13 @@ def profile(workdir, steps, repeat, report):
     report.append("")
 
 
+def edited(text, old, new):
+    """text with old replaced by new; stops if the example no longer contains old."""
+    if old not in text:
+        sys.exit(f"examples/tidal_shear/in.tidal_shear no longer contains {old!r}")
+    return text.replace(old, new)
+
+
 def read_series(path):
     names = open(path).readline().lstrip("# ").split()
     data = np.loadtxt(path, ndmin=2)
@@ -132,7 +139,7 @@ def every_sweep(workdir, horizon, ranks, report):
                 shutil.copy(os.path.join(workdir, f), run_dir)
         if "1e-12" in name:  # the example's fix line gains a tighter tolerance
             src = open(os.path.join(run_dir, "in.tidal_shear")).read()
-            src = src.replace("interpolate ${interpolate} &", "interpolate ${interpolate} tol 1e-12 &")
+            src = edited(src, "interpolate ${interpolate} &", "interpolate ${interpolate} tol 1e-12 &")
             open(os.path.join(run_dir, "in.tidal_shear"), "w").write(src)
         t = run_lmp(run_dir, "in.tidal_shear", dict(variables, run_steps=horizon, samples=2000), ranks)
         results[name] = (t, read_series(os.path.join(run_dir, "timeseries.txt")))
@@ -168,7 +175,7 @@ def balance_ratio(s, m):
 def long_run(workdir, steps, ranks, closed, report):
     if closed:  # no flow through the top either, and a solve converged to round-off
         src = open(os.path.join(workdir, "in.tidal_shear")).read()
-        src = src.replace("top v_ptop ztop v_zwall", "top noflow tol 1e-13")
+        src = edited(src, "top v_ptop ztop v_zwall", "top noflow tol 1e-13")
         open(os.path.join(workdir, "in.tidal_shear"), "w").write(src)
     t = run_lmp(workdir, "in.tidal_shear", {"run_steps": steps}, ranks)
     s = read_series(os.path.join(workdir, "timeseries.txt"))

@@ -181,7 +181,7 @@ void FixDarcyPressure::add_held_fluid_force()
 void FixDarcyPressure::start_fluid()
 {
   const DarcyFixSettings &s = settings;
-  if (uses_variables()) sync_for_variables();
+  if (uses_variables()) sync_atoms_to_host();
   const double p_top = evaluate(s.top), p_bottom = s.bottom_dirichlet ? evaluate(s.bottom) : 0.0;
   solver->set_pressure(std::vector<double>(solver->ncells(), s.initial_pressure), p_top, p_bottom);
   deposit_and_sum(0.0);
@@ -203,7 +203,7 @@ void FixDarcyPressure::advance_fluid()
             solver->solid_volume().begin());
   solver->update_dphi_dt(interval);
 
-  if (uses_variables()) sync_for_variables();
+  if (uses_variables()) sync_atoms_to_host();
   const double p_top = evaluate(s.top), z_top = evaluate(s.z_top);
   const double p_bottom = s.bottom_dirichlet ? evaluate(s.bottom) : 0.0;
   last_solve = solver->step(interval, p_top, z_top, p_bottom);
@@ -238,7 +238,7 @@ void FixDarcyPressure::deposit_and_sum(double interval)
 // only on the error path: the smallest ID of a grain of the group with a non-finite x or v
 tagint FixDarcyPressure::first_nonfinite_grain()
 {
-  sync_for_variables();    // the KOKKOS variant: atom data to the host
+  sync_atoms_to_host();
   double **x = atom->x, **v = atom->v;
   tagint first = MAXTAGINT, first_all = MAXTAGINT;
   for (int i = 0; i < atom->nlocal; ++i) {

@@ -42,8 +42,8 @@ class FixDarcyPressure : public Fix {
   // f += fluid_force (zero outside the group): `interpolate fluid` between fluid steps
   virtual void add_held_fluid_force();
   virtual void grow_fluid_force(int nmax);
-  // called before equal-style variables are evaluated (they read host data)
-  virtual void sync_for_variables() {}
+  // atom data to the host: before equal-style variables are evaluated, and on error paths
+  virtual void sync_atoms_to_host() {}
 
   DarcyFixSettings settings;
   std::unique_ptr<porewater::DarcySolver> solver;

@@ -124,7 +124,7 @@ template <class DeviceType> FixDarcyPressureKokkos<DeviceType>::~FixDarcyPressur
   fluid_force = nullptr;    // not the base class' to free
 }
 
-template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::sync_for_variables()
+template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::sync_atoms_to_host()
 {
   atomKK->sync(Host, ALL_MASK);    // equal-style variables read host data
 }

@@ -26,7 +26,7 @@ template <class DeviceType> class FixDarcyPressureKokkos : public FixDarcyPressu
   void apply_fluid_force() override;
   void add_held_fluid_force() override;
   void grow_fluid_force(int nmax) override;
-  void sync_for_variables() override;
+  void sync_atoms_to_host() override;
 
  private:
   grid_view d_deposits;    // DepositLayout, summed with atomics
