@@ -80,7 +80,7 @@ def main():
                          m.group(2).split("<")[0].strip()))
     print(f"{sym}\n{sum(c for _, c, _ in rows):,} instructions executed")
     run = []
-    for k, row in enumerate(rows + [(0, -1, "")]):
+    for row in rows + [(0, -1, "")]:    # the sentinel closes the last run
         if run and row[1] != run[0][1]:
             count = run[0][1]
             if count >= args.min:
