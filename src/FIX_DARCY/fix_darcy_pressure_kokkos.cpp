@@ -1,17 +1,22 @@
 /* ----------------------------------------------------------------------
    fix darcy/pressure/kk (see doc/fix_darcy_pressure.rst)
 
-   Per fluid step the grid crosses between device and host twice: the deposits
-   (5 doubles per cell) up for the MPI sum and the solve, the pressure gradient (3 per
-   cell) back down. At the grids this model uses (~1e2-1e4 cells) that is a few kB.
+   Per fluid step the grid crosses between device and host twice: the deposits (40 values
+   per stencil block, 5 per cell) up for the MPI sum and the solve, the force field (32 per
+   block, 3 per cell) back down. At the grids this model uses (~1e2-1e4 cells) that is a
+   few hundred kB at most.
 ------------------------------------------------------------------------- */
 
 #include "fix_darcy_pressure_kokkos.h"
+
+#include "kokkos_grains.h"
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
 #include "error.h"
 #include "memory_kokkos.h"
+#include "output.h"
+#include "update.h"
 
 #include <Kokkos_ScatterView.hpp>
 #include <type_traits>
@@ -20,7 +25,7 @@ using namespace LAMMPS_NS;
 
 namespace {
 
-// Every grain adds into the same few cells: per-thread copies on OpenMP (atomic additions
+// Every grain adds into the same few blocks: per-thread copies on OpenMP (atomic additions
 // made the fix 2.4x dearer there), atomics on GPUs, plain serially; LAMMPS' choice for
 // pair forces shared between threads (HALFTHREAD).
 template <class DeviceType>
@@ -35,160 +40,187 @@ using DepositContribution = typename std::conditional<
     Kokkos::Experimental::ScatterNonAtomic,
     typename AtomicDup<HALFTHREAD, DeviceType>::value>::type;
 
-template <class Access> struct AddTo {
-  const Access &sums;    // a ScatterAccess is not copyable
-  KOKKOS_INLINE_FUNCTION void operator()(int slot, double value) const { sums(slot) += value; }
+template <class DeviceType> struct Stencils {
+  Kokkos::View<int *, DeviceType> blocks;
+  Kokkos::View<double *[porewater::CORNERS], Kokkos::LayoutRight, DeviceType> weight_rows;
+  KOKKOS_INLINE_FUNCTION int &block(int i) const { return blocks(i); }
+  KOKKOS_INLINE_FUNCTION double *weights(int i) const { return &weight_rows(i, 0); }
 };
 
-template <class DeviceType> struct DepositGrains {
-  typedef ArrayTypes<DeviceType> AT;
-  typename AT::t_x_array_randomread x;
-  typename AT::t_v_array_randomread v;
-  typename AT::t_float_1d_randomread radius;
-  typename AT::t_int_1d_randomread mask;
+template <class DeviceType> struct Held {
+  typename ArrayTypes<DeviceType>::t_ffloat_2d rows;
+  KOKKOS_INLINE_FUNCTION double &operator()(int i, int d) const { return rows(i, d); }
+};
+
+template <class DeviceType> struct DepositKernel {
+  porewater::CouplingGrid grid;
+  porewater::KokkosGrains<DeviceType> grains;
+  Stencils<DeviceType> stencils;
   DepositScatter<DeviceType> sums;
-  porewater::GridGeom geom;
-  porewater::DepositLayout layout;
+  int groupbit;
   double interval;
-  int groupbit;
-
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
-    if (!(mask(i) & groupbit)) return;
-    auto access = sums.template access<DepositContribution<DeviceType>>();
-    porewater::deposit_grain(geom, layout, x(i, 0), x(i, 1), x(i, 2), v(i, 0), v(i, 1), v(i, 2),
-                             porewater::sphere_volume(radius(i)), interval,
-                             AddTo<decltype(access)>{access});
+    const auto access = sums.template access<DepositContribution<DeviceType>>();
+    porewater::deposit_grain(grid, grains, stencils, groupbit, interval, i,
+                             [&](int slot, double value) { access(slot) += value; });
   }
 };
 
-template <class DeviceType> struct ApplyFluidForce {
-  typedef ArrayTypes<DeviceType> AT;
-  typename AT::t_x_array_randomread x;
-  typename AT::t_float_1d_randomread radius;
-  typename AT::t_int_1d_randomread mask;
-  typename AT::t_f_array f;
-  typename AT::t_ffloat_2d fluid_force;
-  Kokkos::View<const double *, Kokkos::LayoutRight, DeviceType> gradient;
-  porewater::GridGeom geom;
-  double rho_g[3];
+template <class DeviceType> struct ForceKernel {
+  porewater::CouplingGrid grid;
+  porewater::FluidForceField field;    // device pointers
+  porewater::KokkosGrains<DeviceType> grains;
+  Stencils<DeviceType> stencils;
+  Held<DeviceType> held;
   int groupbit;
-
+  bool kept;
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
-    double ff[3] = {0.0, 0.0, 0.0};
-    if (mask(i) & groupbit) {
-      porewater::fluid_force(geom, gradient.data(), rho_g, x(i, 0), x(i, 1), x(i, 2),
-                             porewater::sphere_volume(radius(i)), ff);
-      f(i, 0) += ff[0];
-      f(i, 1) += ff[1];
-      f(i, 2) += ff[2];
-    }
-    fluid_force(i, 0) = ff[0];
-    fluid_force(i, 1) = ff[1];
-    fluid_force(i, 2) = ff[2];
+    porewater::apply_fluid_force(grid, field, grains, stencils, held, groupbit, kept, i);
   }
 };
 
-template <class DeviceType> struct AddHeldForce {
-  typedef ArrayTypes<DeviceType> AT;
-  typename AT::t_f_array f;
-  typename AT::t_ffloat_2d fluid_force;
-
+template <class DeviceType> struct HeldForceKernel {
+  porewater::KokkosGrains<DeviceType> grains;
+  Held<DeviceType> held;
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
-    for (int d = 0; d < 3; ++d) f(i, d) += fluid_force(i, d);
+    porewater::add_held_fluid_force(grains, held, i);
   }
 };
 
 }    // namespace
 
+/* ----------------------------------------------------------------------
+   the grains' side of the coupling as kernels
+------------------------------------------------------------------------- */
+
+template <class DeviceType>
+class FixDarcyPressureKokkos<DeviceType>::Grains final : public porewater::GrainBackend {
+ public:
+  typedef Kokkos::View<double *, Kokkos::LayoutRight, DeviceType> grid_view;
+
+  Grains(FixDarcyPressureKokkos *fix, const porewater::CouplingGrid &grid) :
+      fix(fix), atomKK((AtomKokkos *) fix->atom),
+      d_sums("darcy/pressure:deposits", grid.sums_size()),
+      d_table("darcy/pressure:gradient table", grid.gradient_table_size()),
+      d_cell_gradient("darcy/pressure:cell gradient", 3 * grid.cells.ncells)
+  {
+  }
+
+  void deposit(const porewater::CouplingGrid &grid, double interval, double *sums) override
+  {
+    const int nlocal = fix->atom->nlocal;
+    grow_stencils(nlocal);
+    atomKK->sync(execution(), X_MASK | V_MASK | RADIUS_MASK | MASK_MASK);
+    Kokkos::deep_copy(d_sums, 0.0);
+    DepositScatter<DeviceType> scatter(d_sums);
+    Kokkos::parallel_for("darcy/pressure:deposit", Kokkos::RangePolicy<DeviceType>(0, nlocal),
+                         DepositKernel<DeviceType>{grid, porewater::KokkosGrains<DeviceType>(atomKK),
+                                                   stencils, scatter, fix->groupbit, interval});
+    Kokkos::Experimental::contribute(d_sums, scatter);
+    // the fold, the MPI sum and the solve run on the host
+    Kokkos::View<double *, Kokkos::LayoutRight, Kokkos::HostSpace, Kokkos::MemoryUnmanaged> host(
+        sums, grid.sums_size());
+    Kokkos::deep_copy(host, d_sums);
+  }
+
+  void apply_force(const porewater::CouplingGrid &grid, const porewater::FluidForceField &field,
+                   bool kept, bool field_changed) override
+  {
+    if (field_changed) {
+      copy_to_device(d_table, field.gradient_table);
+      copy_to_device(d_cell_gradient, field.cell_gradient);
+    }
+    const porewater::FluidForceField device_field{
+        d_table.data(), d_cell_gradient.data(), {field.rho_g[0], field.rho_g[1], field.rho_g[2]}};
+    const int nlocal = fix->atom->nlocal;
+    atomKK->sync(execution(), X_MASK | F_MASK | RADIUS_MASK | MASK_MASK);
+    fix->k_fluid_force.template sync<DeviceType>();
+    Kokkos::parallel_for("darcy/pressure:force", Kokkos::RangePolicy<DeviceType>(0, nlocal),
+                         ForceKernel<DeviceType>{grid, device_field,
+                                                 porewater::KokkosGrains<DeviceType>(atomKK),
+                                                 stencils, held(), fix->groupbit, kept});
+    atomKK->modified(execution(), F_MASK);
+    fix->k_fluid_force.template modify<DeviceType>();
+  }
+
+  void add_held_force() override
+  {
+    atomKK->sync(execution(), F_MASK);
+    fix->k_fluid_force.template sync<DeviceType>();
+    Kokkos::parallel_for("darcy/pressure:held force",
+                         Kokkos::RangePolicy<DeviceType>(0, fix->atom->nlocal),
+                         HeldForceKernel<DeviceType>{porewater::KokkosGrains<DeviceType>(atomKK), held()});
+    atomKK->modified(execution(), F_MASK);
+  }
+
+ private:
+  ExecutionSpace execution() const { return fix->execution_space; }
+  Held<DeviceType> held() const
+  {
+    return Held<DeviceType>{fix->k_fluid_force.template view<DeviceType>()};
+  }
+  void grow_stencils(int nlocal)
+  {
+    if ((int) stencils.blocks.extent(0) >= nlocal) return;
+    stencils.blocks = Kokkos::View<int *, DeviceType>("darcy/pressure:stencil blocks", nlocal);
+    stencils.weight_rows = decltype(stencils.weight_rows)("darcy/pressure:stencil weights", nlocal);
+  }
+  static void copy_to_device(const grid_view &to, const double *from)
+  {
+    Kokkos::View<const double *, Kokkos::LayoutRight, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>
+        host(from, to.extent(0));
+    Kokkos::deep_copy(to, host);
+  }
+
+  FixDarcyPressureKokkos *fix;
+  AtomKokkos *atomKK;
+  grid_view d_sums, d_table, d_cell_gradient;
+  Stencils<DeviceType> stencils;
+};
+
 /* ---------------------------------------------------------------------- */
 
 template <class DeviceType>
 FixDarcyPressureKokkos<DeviceType>::FixDarcyPressureKokkos(LAMMPS *lmp, int narg, char **arg) :
-    FixDarcyPressure(lmp, narg, arg)
+    FixDarcyPressure(lmp, narg, arg), kernels(nullptr)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
   execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
-  datamask_read = X_MASK | V_MASK | F_MASK | RADIUS_MASK | MASK_MASK;
-  datamask_modify = F_MASK;
-  d_deposits = grid_view("darcy/pressure:deposits", layout.size());
-  d_gradient = grid_view("darcy/pressure:gradient", 3 * solver->ncells());
+  datamask_read = EMPTY_MASK;
+  datamask_modify = EMPTY_MASK;
+  kernels = new Grains(this, fluid->grid());
 }
 
 template <class DeviceType> FixDarcyPressureKokkos<DeviceType>::~FixDarcyPressureKokkos()
 {
+  delete kernels;
   memoryKK->destroy_kokkos(k_fluid_force, fluid_force);
   fluid_force = nullptr;    // not the base class' to free
 }
 
-template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::sync_atoms_to_host()
+// The per-atom fluid force is copied to the host for output steps (dump, thermo, restart)
+// only, when LAMMPS' KOKKOS Verlet copies the atom data too (a no-op where host and device
+// share memory).
+template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::setup(int vflag)
 {
-  atomKK->sync(Host, ALL_MASK);    // equal-style variables read host data
-}
-
-template <class DeviceType>
-void FixDarcyPressureKokkos<DeviceType>::deposit_grains(double interval)
-{
-  atomKK->sync(execution_space, X_MASK | V_MASK | RADIUS_MASK | MASK_MASK);
-  Kokkos::deep_copy(d_deposits, 0.0);
-  DepositScatter<DeviceType> sums(d_deposits);
-  DepositGrains<DeviceType> deposit{atomKK->k_x.view<DeviceType>(),
-                                    atomKK->k_v.view<DeviceType>(),
-                                    atomKK->k_radius.view<DeviceType>(),
-                                    atomKK->k_mask.view<DeviceType>(),
-                                    sums,
-                                    geom,
-                                    layout,
-                                    interval,
-                                    groupbit};
-  Kokkos::parallel_for("darcy/pressure:deposit", Kokkos::RangePolicy<DeviceType>(0, atom->nlocal),
-                       deposit);
-  Kokkos::Experimental::contribute(d_deposits, sums);
-  Kokkos::View<double *, Kokkos::LayoutRight, Kokkos::HostSpace, Kokkos::MemoryUnmanaged> host(
-      deposits.data(), deposits.size());
-  Kokkos::deep_copy(host, d_deposits);    // the MPI sum and the solve run on the host
-}
-
-template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::apply_fluid_force()
-{
-  if (atom->nmax > maxatom) grow_fluid_force(atom->nmax);
-  if (gradient_changed) {
-    Kokkos::View<const double *, Kokkos::LayoutRight, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>
-        host(solver->pressure_gradient().data(), solver->pressure_gradient().size());
-    Kokkos::deep_copy(d_gradient, host);
-    gradient_changed = false;
-  }
-  atomKK->sync(execution_space, X_MASK | F_MASK | RADIUS_MASK | MASK_MASK);
-  k_fluid_force.template sync<DeviceType>();
-  ApplyFluidForce<DeviceType> apply{atomKK->k_x.view<DeviceType>(),
-                                    atomKK->k_radius.view<DeviceType>(),
-                                    atomKK->k_mask.view<DeviceType>(),
-                                    atomKK->k_f.view<DeviceType>(),
-                                    k_fluid_force.template view<DeviceType>(),
-                                    d_gradient,
-                                    geom,
-                                    {rho_g[0], rho_g[1], rho_g[2]},
-                                    groupbit};
-  Kokkos::parallel_for("darcy/pressure:force", Kokkos::RangePolicy<DeviceType>(0, atom->nlocal),
-                       apply);
-  atomKK->modified(execution_space, F_MASK);
-  // dumps and computes read the per-atom array on the host (no copy when they share memory)
-  k_fluid_force.template modify<DeviceType>();
+  FixDarcyPressure::setup(vflag);
   k_fluid_force.template sync<LMPHostType>();
 }
 
-template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::add_held_fluid_force()
+template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::post_force(int vflag)
 {
-  atomKK->sync(execution_space, F_MASK);
-  k_fluid_force.template sync<DeviceType>();
-  AddHeldForce<DeviceType> add{atomKK->k_f.view<DeviceType>(),
-                               k_fluid_force.template view<DeviceType>()};
-  Kokkos::parallel_for("darcy/pressure:held force",
-                       Kokkos::RangePolicy<DeviceType>(0, atom->nlocal), add);
-  atomKK->modified(execution_space, F_MASK);
+  FixDarcyPressure::post_force(vflag);
+  if (update->ntimestep == output->next) k_fluid_force.template sync<LMPHostType>();
+}
+
+template <class DeviceType> porewater::GrainBackend &FixDarcyPressureKokkos<DeviceType>::grains()
+{
+  if (atom->nmax > maxatom) grow_fluid_force(atom->nmax);
+  return *kernels;
 }
 
 template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::grow_fluid_force(int nmax)
@@ -197,6 +229,19 @@ template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::grow_fluid_
   memoryKK->destroy_kokkos(k_fluid_force, fluid_force);
   memoryKK->create_kokkos(k_fluid_force, fluid_force, maxatom, 3, "darcy/pressure:fluid_force");
   array_atom = fluid_force;
+}
+
+// equal-style variables read atom data on the host, as in LAMMPS' own KOKKOS fixes that
+// evaluate them (fix setforce/kk): the per-atom values and group data they can reference
+template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::sync_for_variables()
+{
+  atomKK->sync(Host, X_MASK | V_MASK | F_MASK | TAG_MASK | TYPE_MASK | MASK_MASK | IMAGE_MASK |
+                   RMASS_MASK | RADIUS_MASK);
+}
+
+template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::sync_for_nonfinite_check()
+{
+  atomKK->sync(Host, X_MASK | V_MASK | TAG_MASK | MASK_MASK);
 }
 
 namespace LAMMPS_NS {

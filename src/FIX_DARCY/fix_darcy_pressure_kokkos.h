@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    fix darcy/pressure/kk: the KOKKOS variant of darcy/pressure. Deposition and the force
-   on the grains run as kernels calling the same porewater:: inline functions as the CPU
-   fix (darcy_grains.h); the grid solve stays on the host DarcySolver.
+   on the grains run as kernels of the core's per-grain coupling (darcy/coupling.h), the
+   same as the CPU fix runs in loops; the grid solve stays on the host.
 ------------------------------------------------------------------------- */
 
 #ifndef PW_FIX_DARCY_PRESSURE_KOKKOS_H
@@ -14,24 +14,21 @@ namespace LAMMPS_NS {
 
 template <class DeviceType> class FixDarcyPressureKokkos : public FixDarcyPressure {
  public:
-  typedef DeviceType device_type;
-  typedef ArrayTypes<DeviceType> AT;
-  typedef Kokkos::View<double *, Kokkos::LayoutRight, DeviceType> grid_view;
-
   FixDarcyPressureKokkos(class LAMMPS *, int, char **);
   ~FixDarcyPressureKokkos() override;
+  void setup(int) override;
+  void post_force(int) override;
+  class Grains;    // the GrainBackend of the kernels
 
  protected:
-  void deposit_grains(double interval) override;
-  void apply_fluid_force() override;
-  void add_held_fluid_force() override;
+  porewater::GrainBackend &grains() override;
   void grow_fluid_force(int nmax) override;
-  void sync_atoms_to_host() override;
+  void sync_for_variables() override;
+  void sync_for_nonfinite_check() override;
 
  private:
-  grid_view d_deposits;    // DepositLayout, summed with atomics
-  grid_view d_gradient;    // the solver's cell-centre grad p, copied after each solve
-  DAT::tdual_ffloat_2d k_fluid_force;
+  Grains *kernels;
+  DAT::tdual_ffloat_2d k_fluid_force;    // `fluid_force` is its host view
 };
 
 }    // namespace LAMMPS_NS

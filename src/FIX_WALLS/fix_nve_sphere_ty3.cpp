@@ -12,7 +12,11 @@
 
 #include "fix_nve_sphere_ty3.h"
 
-#include "taylor3.h"
+#include "grains/host_grains.h"
+#include "input/restart_state.h"
+#include "integrate/taylor3.h"
+#include "input/settings.h"
+#include "lammps_input.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -32,24 +36,9 @@ FixNVESphereTY3::FixNVESphereTY3(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), corrector(0), ncols(porewater::TY3_COLUMNS), history(nullptr),
     dt_of_history(0.0)
 {
-  int iarg = 3;
-  while (iarg < narg) {
-    if (strcmp(arg[iarg], "corrector") == 0) {
-      if (iarg + 2 > narg)
-        error->all(FLERR,
-                   "Illegal fix nve/sphere/ty3 command: corrector needs a value (yes or no)");
-      if (strcmp(arg[iarg + 1], "yes") == 0)
-        corrector = 1;
-      else if (strcmp(arg[iarg + 1], "no") == 0)
-        corrector = 0;
-      else
-        error->all(FLERR, "Illegal fix nve/sphere/ty3 command: corrector must be yes or no, not {}",
-                   arg[iarg + 1]);
-      iarg += 2;
-    } else {
-      error->all(FLERR, "Illegal fix nve/sphere/ty3 keyword: {} (allowed: corrector)", arg[iarg]);
-    }
-  }
+  corrector = porewater::parse_or_stop(lmp, "fix nve/sphere/ty3", narg - 3, arg + 3,
+                                       porewater::parse_ty3)
+                  .corrector;
   if (!atom->sphere_flag) error->all(FLERR, "Fix nve/sphere/ty3 requires atom_style sphere");
 
   time_integrate = 1;
@@ -100,40 +89,39 @@ void FixNVESphereTY3::init()
 
 /* ---------------------------------------------------------------------- */
 
-// step(i, a, alpha) for every local grain of the group, with a = f/m and α = T/I
-template <class Step> void FixNVESphereTY3::each_grain(Step step)
+int FixNVESphereTY3::integrated_count() const
 {
-  double **f = atom->f, **torque = atom->torque;
-  const double *rmass = atom->rmass, *radius = atom->radius;
-  const int *mask = atom->mask;
-  int nlocal = atom->nlocal;
-  if (igroup == atom->firstgroup) nlocal = atom->nfirst;
-  const double ftm2v = force->ftm2v;
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    double a[3], alpha[3];
-    porewater::sphere_accelerations(ftm2v, rmass[i], radius[i], f[i], torque[i], a, alpha);
-    step(i, a, alpha);
-  }
+  return igroup == atom->firstgroup ? atom->nfirst : atom->nlocal;
 }
+
+namespace {
+struct HistoryRows {    // grain i's row of the per-atom history
+  double **rows;
+  double *operator()(int i) const { return rows[i]; }
+};
+porewater::HostGrains<imageint> host_grains(Atom *atom)
+{
+  return porewater::HostGrains<imageint>{atom->x,     atom->v,      atom->f,
+                                         atom->omega, atom->torque, atom->radius,
+                                         atom->rmass, atom->mask,   atom->image};
+}
+}    // namespace
 
 void FixNVESphereTY3::initial_integrate(int /*vflag*/)
 {
-  double **x = atom->x, **v = atom->v, **omega = atom->omega;
-  const double dt = update->dt;
-  each_grain([&](int i, const double *a, const double *alpha) {
-    porewater::ty3_predict_grain(x[i], v[i], omega[i], a, alpha, dt, corrector, history[i]);
-  });
-  dt_of_history = dt;
+  porewater::for_each_grain(integrated_count(),
+                            porewater::Ty3Predict<porewater::HostGrains<imageint>, HistoryRows>{
+                                host_grains(atom), HistoryRows{history}, groupbit, corrector,
+                                update->dt, force->ftm2v});
+  dt_of_history = update->dt;
 }
 
 void FixNVESphereTY3::final_integrate()
 {
-  double **v = atom->v, **omega = atom->omega;
-  const double dt = update->dt;
-  each_grain([&](int i, const double *a, const double *alpha) {
-    porewater::ty3_correct_grain(v[i], omega[i], a, alpha, dt, history[i]);
-  });
+  porewater::for_each_grain(integrated_count(),
+                            porewater::Ty3Correct<porewater::HostGrains<imageint>, HistoryRows>{
+                                host_grains(atom), HistoryRows{history}, groupbit, update->dt,
+                                force->ftm2v});
 }
 
 void FixNVESphereTY3::reset_dt()
@@ -151,18 +139,19 @@ void FixNVESphereTY3::forget_history()
    global restart state: the step size the per-atom history belongs to
 ------------------------------------------------------------------------- */
 
+namespace {
+const porewater::RestartFormat RESTART{porewater::RestartStyle::Ty3, 1, "fix nve/sphere/ty3"};
+}
+
 void FixNVESphereTY3::write_restart(FILE *fp)
 {
-  if (comm->me == 0) {
-    const int size = sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(&dt_of_history, sizeof(double), 1, fp);
-  }
+  porewater::write_restart_state(lmp, fp, RESTART, {dt_of_history});
 }
 
 void FixNVESphereTY3::restart(char *buf)
 {
-  memcpy(&dt_of_history, buf, sizeof(double));
+  dt_of_history =
+      porewater::read_restart_state(lmp, RESTART, buf, 1)[0];
 }
 
 /* ----------------------------------------------------------------------

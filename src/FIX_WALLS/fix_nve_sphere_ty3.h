@@ -1,6 +1,6 @@
 /* -*- c++ -*- ----------------------------------------------------------
    fix nve/sphere/ty3: the third-order Taylor integrator of the reference program `sphere`
-   (MODEL.md §2) for finite-size spheres, with an optional Adams–Moulton velocity corrector.
+   (doc/model.md §2) for finite-size spheres, with an optional Adams–Moulton velocity corrector.
 ------------------------------------------------------------------------- */
 
 #ifndef PW_FIX_NVE_SPHERE_TY3_H
@@ -40,9 +40,7 @@ class FixNVESphereTY3 : public Fix {
   double dt_of_history;    // the history holds accelerations one step of this size apart
 
   virtual void forget_history();
-
- private:
-  template <class Step> void each_grain(Step step);
+  int integrated_count() const;    // nfirst when the group is atom_modify first
 };
 
 }    // namespace LAMMPS_NS

@@ -4,7 +4,8 @@
 
 #include "fix_nve_sphere_ty3_kokkos.h"
 
-#include "taylor3.h"
+#include "integrate/taylor3.h"
+#include "kokkos_grains.h"
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
@@ -15,91 +16,10 @@
 using namespace LAMMPS_NS;
 
 namespace {
-
-// what one grain's step reads and writes, in the execution space of DeviceType
-template <class DeviceType> struct TY3Grains {
-  typedef DeviceType device_type;
-  typedef ArrayTypes<DeviceType> AT;
-  typename AT::t_x_array x;
-  typename AT::t_v_array v, omega;
-  typename AT::t_f_array_const f, torque;
-  typename AT::t_float_1d_randomread rmass, radius;
-  typename AT::t_int_1d_randomread mask;
-  typename AT::t_float_2d history;
-  int groupbit, corrector;
-  double dt, ftm2v;
-
-  KOKKOS_INLINE_FUNCTION void accelerations(const int i, double *a, double *alpha) const
-  {
-    const double fi[3] = {f(i, 0), f(i, 1), f(i, 2)};
-    const double ti[3] = {torque(i, 0), torque(i, 1), torque(i, 2)};
-    porewater::sphere_accelerations(ftm2v, rmass(i), radius(i), fi, ti, a, alpha);
-  }
+template <class DeviceType> struct HistoryRows {    // grain i's row of the per-atom history
+  typename ArrayTypes<DeviceType>::t_float_2d rows;
+  KOKKOS_INLINE_FUNCTION double *operator()(int i) const { return &rows(i, 0); }
 };
-
-template <class DeviceType> struct TY3Predict : TY3Grains<DeviceType> {
-  explicit TY3Predict(const TY3Grains<DeviceType> &grains) : TY3Grains<DeviceType>(grains) {}
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
-  {
-    if (!(this->mask(i) & this->groupbit)) return;
-    double a[3], alpha[3], xi[3], vi[3], wi[3];
-    this->accelerations(i, a, alpha);
-    for (int k = 0; k < 3; k++) {
-      xi[k] = this->x(i, k);
-      vi[k] = this->v(i, k);
-      wi[k] = this->omega(i, k);
-    }
-    porewater::ty3_predict_grain(xi, vi, wi, a, alpha, this->dt, this->corrector,
-                                 &this->history(i, 0));
-    for (int k = 0; k < 3; k++) {
-      this->x(i, k) = xi[k];
-      this->v(i, k) = vi[k];
-      this->omega(i, k) = wi[k];
-    }
-  }
-};
-
-template <class DeviceType> struct TY3Correct : TY3Grains<DeviceType> {
-  explicit TY3Correct(const TY3Grains<DeviceType> &grains) : TY3Grains<DeviceType>(grains) {}
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
-  {
-    if (!(this->mask(i) & this->groupbit)) return;
-    double a[3], alpha[3], vi[3], wi[3];
-    this->accelerations(i, a, alpha);
-    for (int k = 0; k < 3; k++) {
-      vi[k] = this->v(i, k);
-      wi[k] = this->omega(i, k);
-    }
-    porewater::ty3_correct_grain(vi, wi, a, alpha, this->dt, &this->history(i, 0));
-    for (int k = 0; k < 3; k++) {
-      this->v(i, k) = vi[k];
-      this->omega(i, k) = wi[k];
-    }
-  }
-};
-
-// the grain views and step constants both hooks hand to their kernel
-template <class DeviceType>
-TY3Grains<DeviceType> grain_data(AtomKokkos *atomKK, const DAT::tdual_float_2d &k_history,
-                                 int groupbit, int corrector, double dt, double ftm2v)
-{
-  TY3Grains<DeviceType> g;
-  g.x = atomKK->k_x.view<DeviceType>();
-  g.v = atomKK->k_v.view<DeviceType>();
-  g.omega = atomKK->k_omega.view<DeviceType>();
-  g.f = atomKK->k_f.view<DeviceType>();
-  g.torque = atomKK->k_torque.view<DeviceType>();
-  g.rmass = atomKK->k_rmass.view<DeviceType>();
-  g.radius = atomKK->k_radius.view<DeviceType>();
-  g.mask = atomKK->k_mask.view<DeviceType>();
-  g.history = k_history.template view<DeviceType>();
-  g.groupbit = groupbit;
-  g.corrector = corrector;
-  g.dt = dt;
-  g.ftm2v = ftm2v;
-  return g;
-}
-
 }    // namespace
 
 /* ---------------------------------------------------------------------- */
@@ -137,11 +57,12 @@ template <class DeviceType> void FixNVESphereTY3Kokkos<DeviceType>::initial_inte
                X_MASK | V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | RMASS_MASK | RADIUS_MASK |
                    MASK_MASK);
   k_history.template sync<DeviceType>();
-  const TY3Predict<DeviceType> step(grain_data<DeviceType>(atomKK, k_history, groupbit, corrector,
-                                                          update->dt, force->ftm2v));
-  int nlocal = atom->nlocal;
-  if (igroup == atom->firstgroup) nlocal = atom->nfirst;
-  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), step);
+  porewater::kokkos_for_each_grain<DeviceType>(
+      integrated_count(),
+      porewater::Ty3Predict<porewater::KokkosGrains<DeviceType>, HistoryRows<DeviceType>>{
+          porewater::KokkosGrains<DeviceType>(atomKK),
+          HistoryRows<DeviceType>{k_history.template view<DeviceType>()}, groupbit, corrector,
+          update->dt, force->ftm2v});
   atomKK->modified(execution_space, X_MASK | V_MASK | OMEGA_MASK);
   k_history.template modify<DeviceType>();
   dt_of_history = update->dt;
@@ -152,11 +73,12 @@ template <class DeviceType> void FixNVESphereTY3Kokkos<DeviceType>::final_integr
   atomKK->sync(execution_space,
                V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | RMASS_MASK | RADIUS_MASK | MASK_MASK);
   k_history.template sync<DeviceType>();
-  const TY3Correct<DeviceType> step(grain_data<DeviceType>(atomKK, k_history, groupbit, corrector,
-                                                          update->dt, force->ftm2v));
-  int nlocal = atom->nlocal;
-  if (igroup == atom->firstgroup) nlocal = atom->nfirst;
-  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, nlocal), step);
+  porewater::kokkos_for_each_grain<DeviceType>(
+      integrated_count(),
+      porewater::Ty3Correct<porewater::KokkosGrains<DeviceType>, HistoryRows<DeviceType>>{
+          porewater::KokkosGrains<DeviceType>(atomKK),
+          HistoryRows<DeviceType>{k_history.template view<DeviceType>()}, groupbit, update->dt,
+          force->ftm2v});
   atomKK->modified(execution_space, V_MASK | OMEGA_MASK);
 }
 

@@ -10,8 +10,9 @@
 
 #include "fix_shear_stress.h"
 
-#include "keyword_values.h"
-#include "shear_plate.h"
+#include "grains/host_grains.h"
+#include "input/restart_state.h"
+#include "lammps_input.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -35,30 +36,10 @@ using namespace FixConst;
 ------------------------------------------------------------------------- */
 
 FixShearStress::FixShearStress(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), tau(0.0), plate_mass(0.0), plate_displacement(0.0), reference_x(0.0),
-    resisting_stress(0.0)
+    Fix(lmp, narg, arg), plate_displacement(0.0), reference_x(0.0), resisting_stress(0.0)
 {
-  bool have_tau = false, have_mass = false;
-  int iarg = 3;
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (iarg + 2 > narg)
-      error->all(FLERR, "Illegal fix shear/stress command: keyword {} needs a value", key);
-    if (key == "tau") {
-      tau = porewater::keyword_number(lmp, "shear/stress", key, arg[iarg + 1]);
-      have_tau = true;
-    } else if (key == "mass") {
-      plate_mass = porewater::keyword_number(lmp, "shear/stress", key, arg[iarg + 1]);
-      if (plate_mass <= 0.0)
-        error->all(FLERR, "Illegal fix shear/stress command: mass must be > 0");
-      have_mass = true;
-    } else {
-      error->all(FLERR, "Illegal fix shear/stress keyword: {} (allowed: tau, mass)", key);
-    }
-    iarg += 2;
-  }
-  if (!have_tau || !have_mass)
-    error->all(FLERR, "Illegal fix shear/stress command: tau and mass are both required");
+  settings = porewater::parse_or_stop(lmp, "fix shear/stress", narg - 3, arg + 3,
+                                      porewater::parse_shear_stress);
   if (!atom->sphere_flag) error->all(FLERR, "Fix shear/stress requires atom_style sphere");
   if (domain->dimension != 3) error->all(FLERR, "Fix shear/stress requires a 3d simulation");
 
@@ -106,8 +87,8 @@ void FixShearStress::setup(int vflag)
 
 void FixShearStress::post_force(int /*vflag*/)
 {
-  double local[3] = {0.0, 0.0, 0.0};
-  sum_forces_and_positions(local);
+  double local[3];
+  plate_sums(local);
   double sums[3];
   MPI_Allreduce(local, sums, 3, MPI_DOUBLE, MPI_SUM, world);
   if (sums[2] <= 0.0)
@@ -121,11 +102,11 @@ void FixShearStress::post_force(int /*vflag*/)
   plate_displacement = displacement;
   resisting_stress = -sums[0] / area();
 
-  const double a = porewater::plate_acceleration(tau, area(), sums[0], plate_mass);
+  const double a = porewater::plate_acceleration(settings.tau, area(), sums[0], settings.mass);
   if (!std::isfinite(a))
     error->all(FLERR, "Fix shear/stress {}: plate acceleration {} at step {} is not finite", id, a,
                update->ntimestep);
-  move_as_plate(a);
+  move_as_plate(a / force->ftm2v);
 }
 
 // bound: half the neighbor skin per step, beyond which contacts could be missed
@@ -141,59 +122,46 @@ void FixShearStress::check_runaway(double step_displacement)
 
 /* ---------------------------------------------------------------------- */
 
-void FixShearStress::sum_forces_and_positions(double *sums)
+namespace {
+porewater::HostGrains<imageint> host_grains(Atom *atom)
 {
-  double **x = atom->x;
-  double **f = atom->f;
-  const double *rmass = atom->rmass;
-  const imageint *image = atom->image;
-  const int *mask = atom->mask;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    double unwrapped[3];
-    domain->unmap(x[i], image[i], unwrapped);
-    sums[0] += f[i][0];
-    sums[1] += rmass[i] * unwrapped[0];
-    sums[2] += rmass[i];
-  }
+  return porewater::HostGrains<imageint>{atom->x,     atom->v,      atom->f,
+                                         atom->omega, atom->torque, atom->radius,
+                                         atom->rmass, atom->mask,   atom->image};
+}
+}    // namespace
+
+porewater::ImageUnwrap FixShearStress::image_unwrap() const
+{
+  return porewater::ImageUnwrap{IMGMASK,         IMGMAX,          IMGBITS, IMG2BITS,
+                                domain->h[0], domain->h[5], domain->h[4]};
 }
 
-void FixShearStress::sum_momentum(double *sums)
+void FixShearStress::plate_sums(double *sums)
 {
-  double **v = atom->v;
-  const double *rmass = atom->rmass;
-  const int *mask = atom->mask;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    sums[0] += rmass[i] * v[i][0];
-    sums[1] += rmass[i];
-  }
+  porewater::sum_over_grains(
+      atom->nlocal,
+      porewater::PlateSums<porewater::HostGrains<imageint>>{host_grains(atom), groupbit, image_unwrap()},
+      sums);
 }
 
-void FixShearStress::move_as_plate(double plate_acceleration)
+void FixShearStress::momentum_sums(double *sums)
 {
-  double **v = atom->v;
-  double **f = atom->f;
-  double **omega = atom->omega;
-  double **torque = atom->torque;
-  const double *rmass = atom->rmass;
-  const int *mask = atom->mask;
-  const double to_force = plate_acceleration / force->ftm2v;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    f[i][0] = rmass[i] * to_force;
-    f[i][1] = 0.0;
-    v[i][1] = 0.0;
-    for (int k = 0; k < 3; k++) torque[i][k] = omega[i][k] = 0.0;
-  }
+  porewater::sum_over_grains(
+      atom->nlocal, porewater::PlateMomentum<porewater::HostGrains<imageint>>{host_grains(atom), groupbit},
+      sums);
+}
+
+void FixShearStress::move_as_plate(double force_per_mass)
+{
+  porewater::for_each_grain(atom->nlocal, porewater::PlateMotion<porewater::HostGrains<imageint>>{
+                                              host_grains(atom), groupbit, force_per_mass});
 }
 
 void FixShearStress::set_velocity_x(double velocity)
 {
-  double **v = atom->v;
-  const int *mask = atom->mask;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (mask[i] & groupbit) v[i][0] = velocity;
+  porewater::for_each_grain(atom->nlocal, porewater::PlateVelocity<porewater::HostGrains<imageint>>{
+                                              host_grains(atom), groupbit, velocity});
 }
 
 /* ---------------------------------------------------------------------- */
@@ -205,8 +173,8 @@ double FixShearStress::area() const
 
 double FixShearStress::plate_velocity()
 {
-  double local[2] = {0.0, 0.0};
-  sum_momentum(local);
+  double local[2];
+  momentum_sums(local);
   double sums[2];
   MPI_Allreduce(local, sums, 2, MPI_DOUBLE, MPI_SUM, world);
   return sums[1] > 0.0 ? sums[0] / sums[1] : 0.0;
@@ -228,16 +196,17 @@ double FixShearStress::compute_vector(int n)
   }
 }
 
+namespace {
+const porewater::RestartFormat RESTART{porewater::RestartStyle::ShearStress, 1, "fix shear/stress"};
+}
+
 void FixShearStress::write_restart(FILE *fp)
 {
-  if (comm->me == 0) {
-    const int size = sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(&plate_displacement, sizeof(double), 1, fp);
-  }
+  porewater::write_restart_state(lmp, fp, RESTART, {plate_displacement});
 }
 
 void FixShearStress::restart(char *buf)
 {
-  memcpy(&plate_displacement, buf, sizeof(double));
+  plate_displacement =
+      porewater::read_restart_state(lmp, RESTART, buf, 1)[0];
 }

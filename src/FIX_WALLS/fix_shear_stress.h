@@ -1,5 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
-   fix shear/stress: the top layer of the shear experiment (MODEL.md §4) moves in x as one
+   fix shear/stress: the top layer of the shear experiment (doc/model.md §4) moves in x as one
    rigid plate of mass M driven by a shear stress τ; y-motion and rotation locked, vertical
    motion left to each grain.
 ------------------------------------------------------------------------- */
@@ -8,6 +8,9 @@
 #define PW_FIX_SHEAR_STRESS_H
 
 #include "fix.h"
+
+#include "input/settings.h"
+#include "walls/shear_plate.h"
 
 namespace LAMMPS_NS {
 
@@ -23,7 +26,7 @@ class FixShearStress : public Fix {
   void restart(char *) override;
 
  protected:
-  double tau, plate_mass;
+  porewater::ShearStressSettings settings;
   double plate_displacement;    // mass-weighted mean unwrapped x of the group − reference_x
   double reference_x;           // that mean where the displacement was zero
   double resisting_stress;      // −ΣF_x/(L_x L_y), ΣF_x before the plate's own force
@@ -32,10 +35,11 @@ class FixShearStress : public Fix {
   double plate_velocity();    // mass-weighted mean v_x of the group (a reduction)
   void check_runaway(double step_displacement);
 
-  // local parts, overridden by the KOKKOS variant
-  virtual void sum_forces_and_positions(double *sums);      // += {ΣF_x, Σ m x_unwrapped, Σ m}
-  virtual void sum_momentum(double *sums);                  // += {Σ m v_x, Σ m}
-  virtual void move_as_plate(double plate_acceleration);    // f_x = m a; y and rotation locked
+  porewater::ImageUnwrap image_unwrap() const;
+  // the core's plate kernels over the local grains; the KOKKOS variant runs them as kernels
+  virtual void plate_sums(double *sums);                  // {ΣF_x, Σ m x_unwrapped, Σ m}
+  virtual void momentum_sums(double *sums);               // {Σ m v_x, Σ m}
+  virtual void move_as_plate(double force_per_mass);      // f_x = m a; y and rotation locked
   virtual void set_velocity_x(double velocity);
 };
 

@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
-   fix shear/stress/kk: the KOKKOS variant of shear/stress: the sums over the plate's grains
-   and the plate's forces as kernels over the atoms, the plate acceleration from
-   porewater::plate_acceleration() on the host as in the CPU fix.
+   fix shear/stress/kk: the KOKKOS variant of shear/stress: the core's plate kernels
+   (walls/shear_plate.h) as Kokkos kernels over the atoms, the plate itself on the host as
+   in the CPU fix.
 ------------------------------------------------------------------------- */
 
 #ifndef PW_FIX_SHEAR_STRESS_KOKKOS_H
@@ -17,9 +17,9 @@ template <class DeviceType> class FixShearStressKokkos : public FixShearStress {
   FixShearStressKokkos(class LAMMPS *, int, char **);
 
  protected:
-  void sum_forces_and_positions(double *sums) override;
-  void sum_momentum(double *sums) override;
-  void move_as_plate(double plate_acceleration) override;
+  void plate_sums(double *sums) override;
+  void momentum_sums(double *sums) override;
+  void move_as_plate(double force_per_mass) override;
   void set_velocity_x(double velocity) override;
 };
 

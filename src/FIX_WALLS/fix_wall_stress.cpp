@@ -9,8 +9,9 @@
 
 #include "fix_wall_stress.h"
 
-#include "keyword_values.h"
-#include "wall_stress_contact.h"
+#include "grains/host_grains.h"
+#include "input/restart_state.h"
+#include "walls/wall_contact.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -40,47 +41,13 @@ enum { BOUNDARY_SHRINK = 2 };    // Domain::boundary value of `s`
 
 FixWallStress::FixWallStress(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), z_wall(0.0), v_wall(0.0), wall_force(0.0), grain_force(0.0),
-    applied_stress(0.0), spring_energy(0.0), z_auto(0), wall_mass(0.0), kn(0.0), gamma(0.0),
-    stress_value(0.0), stress_var_name(nullptr), stress_var(-1)
+    applied_stress(0.0), spring_energy(0.0), z_auto(0)
 {
-  bool have_z = false, have_stress = false, have_mass = false, have_kn = false;
-  int iarg = 3;
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (iarg + 2 > narg)
-      error->all(FLERR, "Illegal fix wall/stress command: keyword {} needs a value", key);
-    const char *value = arg[iarg + 1];
-    if (key == "z") {
-      z_auto = strcmp(value, "auto") == 0;
-      if (!z_auto) z_wall = porewater::keyword_number(lmp, "wall/stress", key, value, " or auto");
-      have_z = true;
-    } else if (key == "stress") {
-      if (utils::strmatch(value, "^v_")) {
-        stress_var_name = utils::strdup(value + 2);
-      } else {
-        stress_value = porewater::keyword_number(lmp, "wall/stress", key, value, " or v_name");
-      }
-      have_stress = true;
-    } else if (key == "mass") {
-      wall_mass = porewater::keyword_number(lmp, "wall/stress", key, value);
-      if (wall_mass <= 0.0) error->all(FLERR, "Illegal fix wall/stress command: mass must be > 0");
-      have_mass = true;
-    } else if (key == "kn") {
-      kn = porewater::keyword_number(lmp, "wall/stress", key, value);
-      if (kn <= 0.0) error->all(FLERR, "Illegal fix wall/stress command: kn must be > 0");
-      have_kn = true;
-    } else if (key == "damping") {
-      gamma = porewater::keyword_number(lmp, "wall/stress", key, value);
-      if (gamma < 0.0) error->all(FLERR, "Illegal fix wall/stress command: damping must be >= 0");
-    } else {
-      error->all(FLERR,
-                 "Illegal fix wall/stress keyword: {} (allowed: z, stress, mass, kn, damping)",
-                 key);
-    }
-    iarg += 2;
-  }
-  if (!have_z || !have_stress || !have_mass || !have_kn)
-    error->all(FLERR, "Illegal fix wall/stress command: z, stress, mass and kn are all required");
+  settings = porewater::parse_or_stop(lmp, "fix wall/stress", narg - 3, arg + 3,
+                                      porewater::parse_wall_stress);
+  z_wall = settings.z;
+  z_auto = settings.z_auto ? 1 : 0;
+  stress = porewater::EqualValue(settings.stress);
   if (!atom->sphere_flag) error->all(FLERR, "Fix wall/stress requires atom_style sphere");
   if (domain->dimension != 3) error->all(FLERR, "Fix wall/stress requires a 3d simulation");
   if (domain->zperiodic)
@@ -97,11 +64,7 @@ FixWallStress::FixWallStress(LAMMPS *lmp, int narg, char **arg) :
   restart_global = 1;
 }
 
-FixWallStress::~FixWallStress()
-{
-  if (copymode) return;
-  delete[] stress_var_name;
-}
+FixWallStress::~FixWallStress() = default;
 
 int FixWallStress::setmask()
 {
@@ -112,14 +75,7 @@ void FixWallStress::init()
 {
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix wall/stress does not support run_style respa");
-  if (stress_var_name) {
-    stress_var = input->variable->find(stress_var_name);
-    if (stress_var < 0)
-      error->all(FLERR, "Fix wall/stress: variable {} for stress does not exist", stress_var_name);
-    if (!input->variable->equalstyle(stress_var))
-      error->all(FLERR, "Fix wall/stress: variable {} for stress must be equal-style",
-                 stress_var_name);
-  }
+  stress.resolve(lmp, "Fix wall/stress", "stress");
   warn_if_damping_unstable();
 }
 
@@ -127,6 +83,7 @@ void FixWallStress::init()
 // contact chatters, so warn well before it.
 void FixWallStress::warn_if_damping_unstable()
 {
+  const double gamma = settings.damping;
   if (gamma <= 0.0 || !atom->rmass) return;
   double mass_min = std::numeric_limits<double>::infinity();
   for (int i = 0; i < atom->nlocal; i++)
@@ -161,7 +118,7 @@ void FixWallStress::setup(int vflag)
 void FixWallStress::initial_integrate(int /*vflag*/)
 {
   const double dt = update->dt;
-  v_wall += 0.5 * dt * wall_force / wall_mass;
+  v_wall += 0.5 * dt * wall_force / settings.mass;
   z_wall += dt * v_wall;
 }
 
@@ -169,8 +126,9 @@ void FixWallStress::post_force(int vflag)
 {
   v_init(vflag);
   applied_stress = current_stress();
-  double local[2] = {0.0, 0.0};
-  add_contact_forces(local);
+  double local[3];
+  contact_sums(local);
+  if (evflag && vflag_global) virial[2] += local[2];
   double sums[2];
   MPI_Allreduce(local, sums, 2, MPI_DOUBLE, MPI_SUM, world);
   grain_force = sums[0];
@@ -181,7 +139,7 @@ void FixWallStress::post_force(int vflag)
 
 void FixWallStress::final_integrate()
 {
-  v_wall += 0.5 * update->dt * wall_force / wall_mass;
+  v_wall += 0.5 * update->dt * wall_force / settings.mass;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -197,24 +155,28 @@ double FixWallStress::highest_grain_top()
   return top;
 }
 
-void FixWallStress::add_contact_forces(double *sums)
-{
-  double **x = atom->x;
-  double **v = atom->v;
-  double **f = atom->f;
-  const double *radius = atom->radius;
-  const int *mask = atom->mask;
-  const int nlocal = atom->nlocal;
-
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    const porewater::WallContact c =
-        porewater::wall_contact(x[i][2], radius[i], v[i][2], z_wall, v_wall, kn, gamma);
-    f[i][2] += c.force_z;
-    sums[0] -= c.force_z;
-    sums[1] += c.energy;
-    if (evflag && c.force_z != 0.0) v_tally(2, i, (x[i][2] - z_wall) * c.force_z);
+namespace {
+// the CPU fix keeps per-atom virials (Fix::v_tally's per-atom part)
+struct PerAtomVirialZZ {
+  double **vatom;
+  void operator()(int i, double w) const
+  {
+    if (vatom) vatom[i][2] += w;
   }
+};
+}    // namespace
+
+void FixWallStress::contact_sums(double *sums)
+{
+  const porewater::HostGrains<imageint> grains{atom->x,      atom->v,      atom->f,
+                                               atom->omega,  atom->torque, atom->radius,
+                                               atom->rmass,  atom->mask,   atom->image};
+  const porewater::WallContacts<porewater::HostGrains<imageint>, PerAtomVirialZZ> contacts{
+      grains,         PerAtomVirialZZ{evflag && vflag_atom ? vatom : nullptr},
+      groupbit,       z_wall,
+      v_wall,         settings.kn,
+      settings.damping};
+  porewater::sum_over_grains(atom->nlocal, contacts, sums);
 }
 
 double FixWallStress::area() const
@@ -224,11 +186,7 @@ double FixWallStress::area() const
 
 double FixWallStress::current_stress()
 {
-  if (!stress_var_name) return stress_value;
-  modify->clearstep_compute();
-  const double s = input->variable->compute_equal(stress_var);
-  modify->addstep_compute(update->ntimestep + 1);
-  return s;
+  return stress.evaluate(lmp, update->ntimestep + 1);
 }
 
 // every rank holds the same wall, so every rank reaches the same verdict
@@ -287,20 +245,19 @@ void *FixWallStress::extract(const char *name, int &dim)
    restart: the wall's position, velocity, last force and whether `auto` is still pending
 ------------------------------------------------------------------------- */
 
+namespace {
+const porewater::RestartFormat RESTART{porewater::RestartStyle::WallStress, 1, "fix wall/stress"};
+}
+
 void FixWallStress::write_restart(FILE *fp)
 {
-  if (comm->me == 0) {
-    const double state[4] = {z_wall, v_wall, wall_force, (double) z_auto};
-    const int size = sizeof(state);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(state, sizeof(double), 4, fp);
-  }
+  porewater::write_restart_state(lmp, fp, RESTART, {z_wall, v_wall, wall_force, (double) z_auto});
 }
 
 void FixWallStress::restart(char *buf)
 {
-  double state[4];
-  memcpy(state, buf, sizeof(state));
+  const std::vector<double> state =
+      porewater::read_restart_state(lmp, RESTART, buf, 4);
   z_wall = state[0];
   v_wall = state[1];
   wall_force = state[2];

@@ -1,5 +1,5 @@
 /* -*- c++ -*- ----------------------------------------------------------
-   fix wall/stress: the stress-controlled top wall of the shear experiment (MODEL.md §4), a
+   fix wall/stress: the stress-controlled top wall of the shear experiment (doc/model.md §4), a
    frictionless horizontal plane of mass M that moves in z under the grains' contact forces
    and an applied normal stress S(t).
 ------------------------------------------------------------------------- */
@@ -8,6 +8,9 @@
 #define PW_FIX_WALL_STRESS_H
 
 #include "fix.h"
+
+#include "input/settings.h"
+#include "lammps_input.h"
 
 namespace LAMMPS_NS {
 
@@ -37,18 +40,17 @@ class FixWallStress : public Fix {
   double spring_energy;     // ½ k_n δ² summed over the grain–wall contacts
   int z_auto;               // 1 until `z auto` has put the wall on the highest grain
 
-  double wall_mass, kn, gamma;
-  double stress_value;      // S when constant
-  char *stress_var_name;    // S from this equal-style variable, else nullptr
-  int stress_var;
+  porewater::WallStressSettings settings;
+  porewater::EqualValue stress;    // S(t)
 
   double area() const;
   double current_stress();
   void check_wall_in_box();
 
-  // local parts, overridden by the KOKKOS variant
-  virtual double highest_grain_top();               // max z + r over the local grains
-  virtual void add_contact_forces(double *sums);    // += {force on the wall, spring energy}
+  double highest_grain_top();    // max z + r over the local grains (host data)
+  // the grain-wall contacts of the local grains: forces added to the grains, sums =
+  // {force on the wall, spring energy, zz virial}; the KOKKOS variant runs them as a kernel
+  virtual void contact_sums(double *sums);
 };
 
 }    // namespace LAMMPS_NS

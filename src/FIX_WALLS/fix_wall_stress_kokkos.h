@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    fix wall/stress/kk: the KOKKOS variant of wall/stress. The grain–wall contacts run as a
-   kernel over the atoms calling porewater::wall_contact(), shared with the CPU fix; the
-   wall itself (a few scalars) moves on the host.
+   kernel over the atoms: the core's porewater::WallContacts, as in the CPU fix; the wall
+   itself (a few scalars) moves on the host.
 ------------------------------------------------------------------------- */
 
 #ifndef PW_FIX_WALL_STRESS_KOKKOS_H
@@ -15,10 +15,10 @@ namespace LAMMPS_NS {
 template <class DeviceType> class FixWallStressKokkos : public FixWallStress {
  public:
   FixWallStressKokkos(class LAMMPS *, int, char **);
+  void setup(int) override;
 
  protected:
-  double highest_grain_top() override;
-  void add_contact_forces(double *sums) override;
+  void contact_sums(double *sums) override;
 };
 
 }    // namespace LAMMPS_NS

@@ -4,7 +4,8 @@
 
 #include "pair_linear_coulomb.h"
 
-#include "linear_coulomb_contact.h"
+#include "contact/contact_sweep.h"
+#include "lammps_input.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -19,13 +20,14 @@
 #include <cstring>
 
 using namespace LAMMPS_NS;
+using porewater::ContactCoeffs;
 using porewater::ContactForce;
 
 /* ---------------------------------------------------------------------- */
 
 PairLinearCoulomb::PairLinearCoulomb(LAMMPS *lmp) :
-    PairGranHookeHistory(lmp), lever(porewater::LEVER_CONTACT), track_dissipation(0),
-    dissipated(0.0), uniform_coeffs(-1), overlap_limit(0.5), kn_ij(nullptr), kt_ij(nullptr), mu_ij(nullptr)
+    PairGranHookeHistory(lmp), dissipated(0.0), uniform_coeffs(-1), kn_ij(nullptr),
+    kt_ij(nullptr), mu_ij(nullptr)
 {
   // the base class' global coefficients: no damping anywhere
   kn = kt = gamman = gammat = xmu = 0.0;
@@ -73,7 +75,7 @@ void PairLinearCoulomb::broken_contact(int i, int j, double overlap)
              "({:.6g} {:.6g} {:.6g}) overlap by {:.6g}, more than overlap_limit {} of the smaller "
              "radius (or not finite): the time step is too large for kn, or the run has blown up",
              update->ntimestep, atom->tag[i], atom->tag[j], x[i][0], x[i][1], x[i][2], x[j][0],
-             x[j][1], x[j][2], overlap, overlap_limit);
+             x[j][1], x[j][2], overlap, style.overlap_limit);
 }
 
 bool PairLinearCoulomb::coefficients_are_uniform() const
@@ -85,150 +87,145 @@ bool PairLinearCoulomb::coefficients_are_uniform() const
   return true;
 }
 
-template <int MODE> void PairLinearCoulomb::eval()
+porewater::ContactStep PairLinearCoulomb::contact_step() const
 {
-  constexpr bool UNIFORM = MODE != MIXED;
-  const int update_history = update->setupflag ? 0 : 1;
-
-  double **x = atom->x;
-  double **v = atom->v;
-  double **f = atom->f;
-  double **omega = atom->omega;
-  double **torque = atom->torque;
-  const double *radius = atom->radius;
-  const int *type = atom->type;
-  const int nlocal = atom->nlocal;
-  const int newton_pair = force->newton_pair;
-
-  const int inum = list->inum;
-  const int *ilist = list->ilist;
-  const int *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
-  int **firsttouch = fix_history->firstflag;
-  double **firstxi = fix_history->firstvalue;
-  // locals, not members: stores into f and torque could alias a member double
-  const int lever_mode = lever, tracking = track_dissipation;
-  const double limit = overlap_limit;
-  const double step = dt;
-  double lost = 0.0;
-
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    const double xtmp = x[i][0], ytmp = x[i][1], ztmp = x[i][2];
-    const double radi = radius[i];
-    const int itype = UNIFORM ? 1 : type[i];
-    const double *kn_row = kn_ij[itype], *kt_row = kt_ij[itype], *mu_row = mu_ij[itype];
-    const int *jlist = firstneigh[i];
-    const int jnum = numneigh[i];
-    int *touch = firsttouch[i];
-    double *allxi = firstxi[i];
-
-    for (int jj = 0; jj < jnum; jj++) {
-      const int j = jlist[jj] & NEIGHMASK;
-      const double delx = xtmp - x[j][0];
-      const double dely = ytmp - x[j][1];
-      const double delz = ztmp - x[j][2];
-      const double rsq = delx * delx + dely * dely + delz * delz;
-      const double radj = radius[j];
-      const double radsum = radi + radj;
-      double *xi = &allxi[3 * jj];
-
-      if (rsq >= radsum * radsum) {    // an open contact forgets its history
-        if (tracking && touch[jj])
-          lost += porewater::pair_share(j, nlocal, newton_pair) *
-              porewater::opening_loss(kt_row[UNIFORM ? 1 : type[j]], xi);
-        if (touch[jj]) {    // most stay apart: no stores (flag 0 means history 0)
-          touch[jj] = 0;
-          xi[0] = xi[1] = xi[2] = 0.0;
-        }
-        continue;
-      }
-      touch[jj] = 1;
-      const int jtype = UNIFORM ? 1 : type[j];
-      const double kt_pair = kt_row[jtype], mu_pair = mu_row[jtype];
-      // a frictionless pair has no torque and no spring
-      const bool frictional =
-          UNIFORM ? MODE == UNIFORM_FRICTIONAL : !porewater::is_frictionless(kt_pair, mu_pair);
-      const ContactForce c = porewater::linear_coulomb_contact(
-          delx, dely, delz, rsq, radi, radj, v[i], v[j], omega[i], omega[j], kn_row[jtype],
-          kt_pair, mu_pair, lever_mode, update_history, step, xi, frictional);
-      if (porewater::contact_is_broken(c.overlap, radi, radj, limit))
-        broken_contact(i, j, c.overlap);
-      if (tracking)
-        lost += porewater::pair_share(j, nlocal, newton_pair) * porewater::spring_loss(kt_pair, c, xi);
-
-      f[i][0] += c.f[0];
-      f[i][1] += c.f[1];
-      f[i][2] += c.f[2];
-      if (frictional) {
-        torque[i][0] -= c.lever_i * c.tor[0];
-        torque[i][1] -= c.lever_i * c.tor[1];
-        torque[i][2] -= c.lever_i * c.tor[2];
-      }
-      if (newton_pair || j < nlocal) {
-        f[j][0] -= c.f[0];
-        f[j][1] -= c.f[1];
-        f[j][2] -= c.f[2];
-        if (frictional) {
-          torque[j][0] -= c.lever_j * c.tor[0];
-          torque[j][1] -= c.lever_j * c.tor[1];
-          torque[j][2] -= c.lever_j * c.tor[2];
-        }
-      }
-      if (evflag)
-        ev_tally_xyz(i, j, nlocal, newton_pair,
-                     eflag_either ? porewater::contact_energy(kn_row[jtype], kt_pair, c, xi) : 0.0,
-                     0.0, c.f[0], c.f[1], c.f[2], delx, dely, delz);
-    }
-  }
-  dissipated += lost;
+  return porewater::ContactStep{style.lever, update->setupflag ? 0 : 1, dt};
 }
 
 /* ----------------------------------------------------------------------
-   pair_style linear/coulomb [lever contact|radius] [dissipation yes|no]
+   the host side of the sweep: LAMMPS' per-atom arrays, paged neighbor list and history,
+   forces added in place in the order of gran/hooke/history (so that `lever radius`
+   reproduces it bit for bit), energy and virial through Pair::ev_tally_xyz
 ------------------------------------------------------------------------- */
+
+template <int MODE> struct PairLinearCoulomb::Sweep {
+  static constexpr bool UNIFORM = MODE != MIXED;
+  struct Sums {
+    double lost = 0.0;
+  };
+  struct Row {
+    const int *jlist;
+    int jnum;
+    int *flags;
+    double *springs;
+    int count() const { return jnum; }
+    int neighbor(int jj) const { return jlist[jj] & NEIGHMASK; }
+    int touched(int jj) const { return flags[jj]; }
+    void touch(int jj) const { flags[jj] = 1; }
+    void forget(int jj) const
+    {
+      flags[jj] = 0;
+      springs[3 * jj] = springs[3 * jj + 1] = springs[3 * jj + 2] = 0.0;
+    }
+    double *history(int jj, double *) const { return springs + 3 * jj; }
+    void keep_history(int, const double *) const {}    // updated in place
+  };
+  struct GrainForce {
+    double *f, *torque;
+    void add(const ContactForce &c, int frictional) const
+    {
+      f[0] += c.f[0];
+      f[1] += c.f[1];
+      f[2] += c.f[2];
+      if (frictional) {
+        torque[0] -= c.lever_i * c.tor[0];
+        torque[1] -= c.lever_i * c.tor[1];
+        torque[2] -= c.lever_i * c.tor[2];
+      }
+    }
+    void finish() const {}
+  };
+
+  PairLinearCoulomb *pair;
+  double **xs, **vs, **fs, **omegas, **torques;
+  const double *radii;
+  const int *types;
+  const int *numneigh;
+  int **firstneigh, **firsttouch;
+  double **firstxi;
+  double **kn, **kt, **mu;
+  ContactCoeffs uniform;
+  porewater::ContactStep contact;
+  double limit;
+  int nlocal, newton_pair, tracking;
+
+  double x(int i, int d) const { return xs[i][d]; }
+  double radius(int i) const { return radii[i]; }
+  int type(int i) const { return UNIFORM ? 1 : types[i]; }
+  Row neighbors(int i) const { return Row{firstneigh[i], numneigh[i], firsttouch[i], firstxi[i]}; }
+  const double *v(int i, double *) const { return vs[i]; }
+  const double *omega(int i, double *) const { return omegas[i]; }
+  ContactCoeffs coeffs(int itype, int jtype) const
+  {
+    if (UNIFORM)    // frictional known at compile time: the frictionless path has no spring
+      return ContactCoeffs{uniform.kn, uniform.kt, uniform.mu, MODE == UNIFORM_FRICTIONAL};
+    return porewater::contact_coeffs(kn[itype][jtype], kt[itype][jtype], mu[itype][jtype]);
+  }
+  porewater::ContactStep step() const { return contact; }
+  bool owns(int j) const { return newton_pair || j < nlocal; }
+  double share(int j) const { return porewater::pair_share(j, nlocal, newton_pair); }
+  GrainForce force_on(int i) const { return GrainForce{fs[i], torques[i]}; }
+  void add_reaction(int j, const ContactForce &c, int frictional) const
+  {
+    fs[j][0] -= c.f[0];
+    fs[j][1] -= c.f[1];
+    fs[j][2] -= c.f[2];
+    if (frictional) {
+      torques[j][0] -= c.lever_j * c.tor[0];
+      torques[j][1] -= c.lever_j * c.tor[1];
+      torques[j][2] -= c.lever_j * c.tor[2];
+    }
+  }
+  double overlap_limit() const { return limit; }
+  void broken(int i, int j, double overlap) const { pair->broken_contact(i, j, overlap); }
+  bool tracks_dissipation() const { return tracking; }
+  void add_loss(Sums &sums, double energy) const { sums.lost += energy; }
+  void tally(Sums &, int i, int j, const ContactForce &c, const ContactCoeffs &k,
+             const double *xi, double delx, double dely, double delz) const
+  {
+    if (pair->evflag)
+      pair->ev_tally_xyz(i, j, nlocal, newton_pair,
+                         pair->eflag_either ? porewater::contact_energy(k.kn, k.kt, c, xi) : 0.0,
+                         0.0, c.f[0], c.f[1], c.f[2], delx, dely, delz);
+  }
+};
+
+template <int MODE> void PairLinearCoulomb::eval()
+{
+  const Sweep<MODE> sweep{this,
+                          atom->x,
+                          atom->v,
+                          atom->f,
+                          atom->omega,
+                          atom->torque,
+                          atom->radius,
+                          atom->type,
+                          list->numneigh,
+                          list->firstneigh,
+                          fix_history->firstflag,
+                          fix_history->firstvalue,
+                          kn_ij,
+                          kt_ij,
+                          mu_ij,
+                          porewater::contact_coeffs(kn_ij[1][1], kt_ij[1][1], mu_ij[1][1]),
+                          contact_step(),
+                          style.overlap_limit,
+                          atom->nlocal,
+                          force->newton_pair,
+                          style.dissipation ? 1 : 0};
+  typename Sweep<MODE>::Sums sums;
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  for (int ii = 0; ii < inum; ii++) porewater::linear_coulomb_sweep(sweep, ilist[ii], sums);
+  dissipated += sums.lost;
+}
+
+/* ---------------------------------------------------------------------- */
 
 void PairLinearCoulomb::settings(int narg, char **arg)
 {
-  lever = porewater::LEVER_CONTACT;
-  track_dissipation = 0;
-  overlap_limit = 0.5;
-  int iarg = 0;
-  while (iarg < narg) {
-    if (strcmp(arg[iarg], "lever") == 0) {
-      if (iarg + 2 > narg) error->all(FLERR, "Illegal pair_style linear/coulomb: lever needs a value (contact or radius)");
-      if (strcmp(arg[iarg + 1], "contact") == 0)
-        lever = porewater::LEVER_CONTACT;
-      else if (strcmp(arg[iarg + 1], "radius") == 0)
-        lever = porewater::LEVER_RADIUS;
-      else
-        error->all(FLERR, "Illegal pair_style linear/coulomb: lever must be contact or radius, not {}",
-                   arg[iarg + 1]);
-      iarg += 2;
-    } else if (strcmp(arg[iarg], "dissipation") == 0) {
-      if (iarg + 2 > narg) error->all(FLERR, "Illegal pair_style linear/coulomb: dissipation needs yes or no");
-      if (strcmp(arg[iarg + 1], "yes") == 0)
-        track_dissipation = 1;
-      else if (strcmp(arg[iarg + 1], "no") == 0)
-        track_dissipation = 0;
-      else
-        error->all(FLERR, "Illegal pair_style linear/coulomb: dissipation must be yes or no, not {}",
-                   arg[iarg + 1]);
-      iarg += 2;
-    } else if (strcmp(arg[iarg], "overlap_limit") == 0) {
-      if (iarg + 2 > narg) error->all(FLERR, "Illegal pair_style linear/coulomb: overlap_limit needs a value");
-      overlap_limit = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (overlap_limit <= 0.0 || overlap_limit > 2.0)
-        error->all(FLERR, "Illegal pair_style linear/coulomb: overlap_limit must be in (0, 2], not {}",
-                   overlap_limit);
-      iarg += 2;
-    } else {
-      error->all(FLERR,
-                 "Illegal pair_style linear/coulomb keyword: {} (allowed: lever, dissipation, "
-                 "overlap_limit)",
-                 arg[iarg]);
-    }
-  }
+  style = porewater::parse_or_stop(lmp, "pair_style linear/coulomb", narg, arg,
+                                   porewater::parse_linear_coulomb);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -251,32 +248,24 @@ void PairLinearCoulomb::allocate_coeffs()
 
 void PairLinearCoulomb::coeff(int narg, char **arg)
 {
-  if (narg != 5)
-    error->all(FLERR, "Incorrect args for pair_coeff linear/coulomb: expected I J kn kt mu, got {} args",
-               narg);
+  if (narg < 2) error->all(FLERR, "Illegal pair_coeff linear/coulomb command: expected I J kn kt mu");
   allocate_coeffs();
-
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-  const double kn_one = utils::numeric(FLERR, arg[2], false, lmp);
-  const double kt_one = utils::numeric(FLERR, arg[3], false, lmp);
-  const double mu_one = utils::numeric(FLERR, arg[4], false, lmp);
-  if (kn_one <= 0.0) error->all(FLERR, "pair_coeff linear/coulomb: kn must be > 0, got {}", kn_one);
-  if (kt_one < 0.0) error->all(FLERR, "pair_coeff linear/coulomb: kt must be >= 0, got {}", kt_one);
-  if (mu_one < 0.0) error->all(FLERR, "pair_coeff linear/coulomb: mu must be >= 0, got {}", mu_one);
-
+  const ContactCoeffs k = porewater::parse_or_stop(lmp, "pair_coeff linear/coulomb", narg - 2,
+                                                   arg + 2, porewater::parse_linear_coulomb_coeffs);
   int count = 0;
   for (int i = ilo; i <= ihi; i++) {
     for (int j = MAX(jlo, i); j <= jhi; j++) {
-      kn_ij[i][j] = kn_one;
-      kt_ij[i][j] = kt_one;
-      mu_ij[i][j] = mu_one;
+      kn_ij[i][j] = k.kn;
+      kt_ij[i][j] = k.kt;
+      mu_ij[i][j] = k.mu;
       setflag[i][j] = 1;
       count++;
     }
   }
-  if (count == 0) error->all(FLERR, "Incorrect args for pair_coeff linear/coulomb: no type pair matched");
+  if (count == 0) error->all(FLERR, "Illegal pair_coeff linear/coulomb command: no type pair matched");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -350,21 +339,23 @@ void PairLinearCoulomb::read_restart(FILE *fp)
 
 void PairLinearCoulomb::write_restart_settings(FILE *fp)
 {
+  const int lever = style.lever, dissipation = style.dissipation ? 1 : 0;
   fwrite(&lever, sizeof(int), 1, fp);
-  fwrite(&track_dissipation, sizeof(int), 1, fp);
-  fwrite(&overlap_limit, sizeof(double), 1, fp);
+  fwrite(&dissipation, sizeof(int), 1, fp);
+  fwrite(&style.overlap_limit, sizeof(double), 1, fp);
 }
 
 void PairLinearCoulomb::read_restart_settings(FILE *fp)
 {
+  int flags[2] = {0, 0};
   if (comm->me == 0) {
-    utils::sfread(FLERR, &lever, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &track_dissipation, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &overlap_limit, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, flags, sizeof(int), 2, fp, nullptr, error);
+    utils::sfread(FLERR, &style.overlap_limit, sizeof(double), 1, fp, nullptr, error);
   }
-  MPI_Bcast(&lever, 1, MPI_INT, 0, world);
-  MPI_Bcast(&track_dissipation, 1, MPI_INT, 0, world);
-  MPI_Bcast(&overlap_limit, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(flags, 2, MPI_INT, 0, world);
+  MPI_Bcast(&style.overlap_limit, 1, MPI_DOUBLE, 0, world);
+  style.lever = flags[0];
+  style.dissipation = flags[1] != 0;
 }
 
 void PairLinearCoulomb::write_data(FILE *fp)
@@ -409,9 +400,13 @@ double PairLinearCoulomb::single(int i, int j, int itype, int jtype, double rsq,
 
   double **x = atom->x;
   const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+  const porewater::ContactPair pair{delx,         dely,         delz,             rsq,
+                                    radi,         radj,         atom->v[i],       atom->v[j],
+                                    atom->omega[i], atom->omega[j]};
+  const porewater::ContactStep setup_step{style.lever, 0, dt};
   const ContactForce c = porewater::linear_coulomb_contact(
-      delx, dely, delz, rsq, radi, radj, atom->v[i], atom->v[j], atom->omega[i], atom->omega[j],
-      kn_ij[itype][jtype], kt_ij[itype][jtype], mu_ij[itype][jtype], lever, 0, dt, xi);
+      pair, porewater::contact_coeffs(kn_ij[itype][jtype], kt_ij[itype][jtype], mu_ij[itype][jtype]),
+      setup_step, xi);
   fforce = c.ccel;
   svector[0] = c.ft[0];
   svector[1] = c.ft[1];
@@ -429,6 +424,6 @@ void *PairLinearCoulomb::extract(const char *str, int &dim)
   if (strcmp(str, "kt") == 0) return (void *) kt_ij;
   if (strcmp(str, "mu") == 0) return (void *) mu_ij;
   dim = 0;
-  if (strcmp(str, "lever") == 0) return (void *) &lever;
+  if (strcmp(str, "lever") == 0) return (void *) &style.lever;
   return nullptr;
 }

@@ -1,12 +1,15 @@
 /* -*- c++ -*- ----------------------------------------------------------
    pair_style linear/coulomb: linear normal and tangential springs with a Coulomb cap,
-   rotation-corrected tangential history, torque, no damping (Damsgaard et al. 2016).
+   rotation-corrected tangential history, torque, no damping (doc/model.md §1). The law
+   and its bookkeeping are the core's (contact/contact_sweep.h); this class adapts LAMMPS.
 ------------------------------------------------------------------------- */
 
 #ifndef PW_PAIR_LINEAR_COULOMB_H
 #define PW_PAIR_LINEAR_COULOMB_H
 
 #include "pair_gran_hooke_history.h"
+
+#include "input/settings.h"
 
 namespace LAMMPS_NS {
 
@@ -32,16 +35,18 @@ class PairLinearCoulomb : public PairGranHookeHistory {
   void *extract(const char *, int &) override;
 
  protected:
-  int lever;                    // porewater::LEVER_CONTACT or LEVER_RADIUS
-  int track_dissipation;        // accumulate frictional dissipation into pvector[0]
+  porewater::LinearCoulombSettings style;
   double dissipated;            // this rank's share since the pair style was defined
   int uniform_coeffs;           // 1: one kn, kt, mu for all type pairs; -1: not yet known
-  double overlap_limit;         // a deeper contact (fraction of the smaller radius) stops the run
   double **kn_ij, **kt_ij, **mu_ij;   // per type pair, mixed in init_one()
   void allocate_coeffs();
   bool coefficients_are_uniform() const;
   void broken_contact(int i, int j, double overlap);
-  enum { MIXED, UNIFORM_FRICTIONAL, UNIFORM_FRICTIONLESS };    // eval() modes
+  porewater::ContactStep contact_step() const;
+
+ private:
+  enum { MIXED, UNIFORM_FRICTIONAL, UNIFORM_FRICTIONLESS };    // sweep modes
+  template <int MODE> struct Sweep;    // the host side of porewater::linear_coulomb_sweep
   template <int MODE> void eval();
 };
 

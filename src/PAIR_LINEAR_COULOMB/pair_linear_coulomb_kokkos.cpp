@@ -10,7 +10,7 @@
 
 #include "pair_linear_coulomb_kokkos.h"
 
-#include "linear_coulomb_contact.h"
+#include "contact/contact_sweep.h"
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
@@ -26,7 +26,217 @@
 #include "update.h"
 
 using namespace LAMMPS_NS;
+using porewater::ContactCoeffs;
 using porewater::ContactForce;
+
+namespace {
+
+// What the kernel sums over the grains: energy, virial and frictional dissipation.
+struct PairTally {
+  double energy, virial[6], dissipated;
+  KOKKOS_INLINE_FUNCTION PairTally() : energy(0.0), virial{0, 0, 0, 0, 0, 0}, dissipated(0.0) {}
+  KOKKOS_INLINE_FUNCTION void operator+=(const PairTally &r)
+  {
+    energy += r.energy;
+    for (int n = 0; n < 6; n++) virial[n] += r.virial[n];
+    dissipated += r.dissipated;
+  }
+  KOKKOS_INLINE_FUNCTION void operator+=(const volatile PairTally &r) volatile
+  {
+    energy += r.energy;
+    for (int n = 0; n < 6; n++) virial[n] += r.virial[n];
+    dissipated += r.dissipated;
+  }
+};
+
+// The sweep over each grain's half list (newton off: pairs with a ghost j are computed on
+// both ranks). NEIGHFLAG HALF: one thread; HALFTHREAD: threads share j, whose forces go to
+// per-thread copies on OpenMP and atomically on GPUs.
+template <class DeviceType, int NEIGHFLAG, int EVFLAG, int UPDATE_HISTORY> struct SweepKernel {
+  typedef ArrayTypes<DeviceType> AT;
+  typedef PairTally value_type;    // of the parallel_reduce (EVFLAG)
+  typedef typename NeedDup<NEIGHFLAG, DeviceType>::value Dup;
+  typedef Kokkos::Experimental::ScatterView<F_FLOAT *[3], typename DAT::t_f_array::array_layout,
+                                            typename KKDevice<DeviceType>::value,
+                                            Kokkos::Experimental::ScatterSum, Dup>
+      Scatter;
+  typedef typename AtomicDup<NEIGHFLAG, DeviceType>::value Contribution;
+  typedef Kokkos::View<E_FLOAT *, typename DAT::t_efloat_1d::array_layout,
+                       typename KKDevice<DeviceType>::value,
+                       Kokkos::MemoryTraits<AtomicF<NEIGHFLAG>::value>>
+      AtomEnergy;
+  typedef Kokkos::View<F_FLOAT *[6], typename DAT::t_virial_array::array_layout,
+                       typename KKDevice<DeviceType>::value,
+                       Kokkos::MemoryTraits<AtomicF<NEIGHFLAG>::value>>
+      AtomVirial;
+
+  typename AT::t_x_array_randomread x;
+  typename AT::t_v_array_randomread v, omega;
+  typename AT::t_int_1d_randomread type;
+  typename AT::t_float_1d_randomread radius;
+  typename AT::t_tagint_1d_randomread tag;
+  typename AT::t_int_1d_randomread ilist, numneigh;
+  typename AT::t_neighbors_2d neighbors;
+  typename AT::t_int_2d touch;
+  typename AT::t_float_2d springs;
+  typename PairLinearCoulombKokkos<DeviceType>::tdual_coeffs::t_dev_const_um coeffs;
+  Scatter f, torque;
+  typename AT::t_efloat_1d eatom;
+  typename AT::t_virial_array vatom;
+  typename Kokkos::DualView<tagint[2], DeviceType>::t_dev broken_tags;
+  porewater::ContactStep contact;
+  double limit;
+  int nlocal, tracking, eflag_global, vflag_global, eflag_atom, vflag_atom;
+
+  // porewater::linear_coulomb_sweep's view of this kernel, for one grain's thread
+  template <class Access> struct Policy {
+    const SweepKernel &k;
+    const Access &f, &torque;
+    typedef PairTally Sums;
+
+    struct Row {
+      const SweepKernel &k;
+      int i;
+      KOKKOS_INLINE_FUNCTION int count() const { return k.numneigh[i]; }
+      KOKKOS_INLINE_FUNCTION int neighbor(int jj) const { return k.neighbors(i, jj) & NEIGHMASK; }
+      KOKKOS_INLINE_FUNCTION int touched(int jj) const { return k.touch(i, jj); }
+      KOKKOS_INLINE_FUNCTION void touch(int jj) const { k.touch(i, jj) = 1; }
+      KOKKOS_INLINE_FUNCTION void forget(int jj) const
+      {
+        k.touch(i, jj) = 0;
+        for (int d = 0; d < 3; d++) k.springs(i, 3 * jj + d) = 0.0;
+      }
+      KOKKOS_INLINE_FUNCTION double *history(int jj, double *scratch) const
+      {
+        for (int d = 0; d < 3; d++) scratch[d] = k.springs(i, 3 * jj + d);
+        return scratch;
+      }
+      KOKKOS_INLINE_FUNCTION void keep_history(int jj, const double *xi) const
+      {
+        for (int d = 0; d < 3; d++) k.springs(i, 3 * jj + d) = xi[d];
+      }
+    };
+    // scalars, not arrays: kept in registers; written once, if any contact closed
+    struct GrainForce {
+      const Access &f, &torque;
+      int i;
+      double fx = 0.0, fy = 0.0, fz = 0.0, tx = 0.0, ty = 0.0, tz = 0.0;
+      bool closed_any = false;    // most grains have no closed contact in their half list
+      KOKKOS_INLINE_FUNCTION void add(const ContactForce &c, int frictional)
+      {
+        closed_any = true;
+        fx += c.f[0];
+        fy += c.f[1];
+        fz += c.f[2];
+        if (frictional) {
+          tx -= c.lever_i * c.tor[0];
+          ty -= c.lever_i * c.tor[1];
+          tz -= c.lever_i * c.tor[2];
+        }
+      }
+      KOKKOS_INLINE_FUNCTION void finish() const
+      {
+        if (!closed_any) return;
+        f(i, 0) += fx;
+        f(i, 1) += fy;
+        f(i, 2) += fz;
+        torque(i, 0) += tx;
+        torque(i, 1) += ty;
+        torque(i, 2) += tz;
+      }
+    };
+
+    KOKKOS_INLINE_FUNCTION double x(int i, int d) const { return k.x(i, d); }
+    KOKKOS_INLINE_FUNCTION double radius(int i) const { return k.radius[i]; }
+    KOKKOS_INLINE_FUNCTION int type(int i) const { return k.type[i]; }
+    KOKKOS_INLINE_FUNCTION Row neighbors(int i) const { return Row{k, i}; }
+    KOKKOS_INLINE_FUNCTION const double *v(int i, double *scratch) const
+    {
+      for (int d = 0; d < 3; d++) scratch[d] = k.v(i, d);
+      return scratch;
+    }
+    KOKKOS_INLINE_FUNCTION const double *omega(int i, double *scratch) const
+    {
+      for (int d = 0; d < 3; d++) scratch[d] = k.omega(i, d);
+      return scratch;
+    }
+    KOKKOS_INLINE_FUNCTION ContactCoeffs coeffs(int itype, int jtype) const
+    {
+      return k.coeffs(itype, jtype);
+    }
+    KOKKOS_INLINE_FUNCTION porewater::ContactStep step() const
+    {
+      return porewater::ContactStep{k.contact.lever, UPDATE_HISTORY, k.contact.dt};
+    }
+    KOKKOS_INLINE_FUNCTION bool owns(int j) const { return j < k.nlocal; }
+    KOKKOS_INLINE_FUNCTION double share(int j) const { return porewater::pair_share(j, k.nlocal, 0); }
+    KOKKOS_INLINE_FUNCTION GrainForce force_on(int i) const { return GrainForce{f, torque, i}; }
+    KOKKOS_INLINE_FUNCTION void add_reaction(int j, const ContactForce &c, int frictional) const
+    {
+      f(j, 0) -= c.f[0];
+      f(j, 1) -= c.f[1];
+      f(j, 2) -= c.f[2];
+      if (frictional) {
+        torque(j, 0) -= c.lever_j * c.tor[0];
+        torque(j, 1) -= c.lever_j * c.tor[1];
+        torque(j, 2) -= c.lever_j * c.tor[2];
+      }
+    }
+    KOKKOS_INLINE_FUNCTION double overlap_limit() const { return k.limit; }
+    // the first broken contact found is the one the message names
+    KOKKOS_INLINE_FUNCTION void broken(int i, int j, double) const
+    {
+      if (Kokkos::atomic_compare_exchange(&k.broken_tags(0), tagint(0), k.tag[i]) == 0)
+        k.broken_tags(1) = k.tag[j];
+    }
+    KOKKOS_INLINE_FUNCTION bool tracks_dissipation() const { return EVFLAG && k.tracking; }
+    KOKKOS_INLINE_FUNCTION void add_loss(PairTally &sums, double energy) const
+    {
+      sums.dissipated += energy;
+    }
+    // energy and virial of one pair, split as Pair::ev_tally_xyz does with newton off
+    KOKKOS_INLINE_FUNCTION void tally(PairTally &sums, int i, int j, const ContactForce &c,
+                                      const ContactCoeffs &kc, const double *xi, double delx,
+                                      double dely, double delz) const
+    {
+      if (!EVFLAG) return;
+      const double energy = porewater::contact_energy(kc.kn, kc.kt, c, xi);
+      const double vir[6] = {delx * c.f[0], dely * c.f[1], delz * c.f[2],
+                             delx * c.f[1], delx * c.f[2], dely * c.f[2]};
+      const double owned = 0.5 * ((i < k.nlocal) + (j < k.nlocal));
+      if (k.eflag_global) sums.energy += owned * energy;
+      if (k.vflag_global)
+        for (int n = 0; n < 6; n++) sums.virial[n] += owned * vir[n];
+      if (k.eflag_atom) {
+        const AtomEnergy a_eatom = k.eatom;
+        if (i < k.nlocal) a_eatom[i] += 0.5 * energy;
+        if (j < k.nlocal) a_eatom[j] += 0.5 * energy;
+      }
+      if (k.vflag_atom) {
+        const AtomVirial a_vatom = k.vatom;
+        for (int n = 0; n < 6; n++) {
+          if (i < k.nlocal) a_vatom(i, n) += 0.5 * vir[n];
+          if (j < k.nlocal) a_vatom(j, n) += 0.5 * vir[n];
+        }
+      }
+    }
+  };
+
+  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int ii, PairTally &sums) const
+  {
+    const auto a_f = f.template access<Contribution>();
+    const auto a_torque = torque.template access<Contribution>();
+    const Policy<decltype(a_f)> policy{*this, a_f, a_torque};
+    porewater::linear_coulomb_sweep(policy, ilist[ii], sums);
+  }
+  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int ii) const
+  {
+    PairTally unused;
+    this->operator()(ii, unused);
+  }
+};
+
+}    // namespace
 
 /* ---------------------------------------------------------------------- */
 
@@ -37,9 +247,9 @@ PairLinearCoulombKokkos<DeviceType>::PairLinearCoulombKokkos(LAMMPS *lmp) :
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
   execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
-  datamask_read = X_MASK | V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | TYPE_MASK | ENERGY_MASK |
-      VIRIAL_MASK | RADIUS_MASK | TAG_MASK;
-  datamask_modify = F_MASK | TORQUE_MASK | ENERGY_MASK | VIRIAL_MASK;
+  // synced in compute() itself, as every /kk style of the package does
+  datamask_read = EMPTY_MASK;
+  datamask_modify = EMPTY_MASK;
 }
 
 template <class DeviceType> PairLinearCoulombKokkos<DeviceType>::~PairLinearCoulombKokkos()
@@ -68,7 +278,7 @@ template <class DeviceType> void PairLinearCoulombKokkos<DeviceType>::init_style
   }
   PairLinearCoulomb::init_style();
 
-  neighflag = lmp->kokkos->neighflag;
+  const int neighflag = lmp->kokkos->neighflag;
   int irequest = neighbor->nrequest - 1;
   neighbor->requests[irequest]->kokkos_host =
       std::is_same<DeviceType, LMPHostType>::value && !std::is_same<DeviceType, LMPDeviceType>::value;
@@ -87,20 +297,15 @@ template <class DeviceType> void PairLinearCoulombKokkos<DeviceType>::init_style
                       "version loses ghost-pair histories under newton on");
 
   const int n = atom->ntypes;
-  if ((int) k_params.extent(0) != n + 1)
-    k_params = Kokkos::DualView<ContactParams **, Kokkos::LayoutRight, DeviceType>(
-        "PairLinearCoulomb::params", n + 1, n + 1);
+  if ((int) k_coeffs.extent(0) != n + 1) k_coeffs = tdual_coeffs("PairLinearCoulomb::coeffs", n + 1, n + 1);
 }
 
 template <class DeviceType> double PairLinearCoulombKokkos<DeviceType>::init_one(int i, int j)
 {
   const double cut = PairLinearCoulomb::init_one(i, j);
-  k_params.h_view(i, j).kn = kn_ij[i][j];
-  k_params.h_view(i, j).kt = kt_ij[i][j];
-  k_params.h_view(i, j).mu = mu_ij[i][j];
-  k_params.h_view(i, j).frictional = porewater::is_frictionless(kt_ij[i][j], mu_ij[i][j]) ? 0 : 1;
-  k_params.h_view(j, i) = k_params.h_view(i, j);
-  k_params.template modify<LMPHostType>();
+  k_coeffs.h_view(i, j) = porewater::contact_coeffs(kn_ij[i][j], kt_ij[i][j], mu_ij[i][j]);
+  k_coeffs.h_view(j, i) = k_coeffs.h_view(i, j);
+  k_coeffs.template modify<LMPHostType>();
   return cut;
 }
 
@@ -108,85 +313,42 @@ template <class DeviceType> double PairLinearCoulombKokkos<DeviceType>::init_one
 
 template <class DeviceType> void PairLinearCoulombKokkos<DeviceType>::compute(int eflag_in, int vflag_in)
 {
-  copymode = 1;
-  eflag = eflag_in;
-  vflag = vflag_in;
-  ev_init(eflag, vflag, 0);
-  const int update_history = update->setupflag ? 0 : 1;
-
+  ev_init(eflag_in, vflag_in, 0);
   if (eflag_atom) {
     memoryKK->destroy_kokkos(k_eatom, eatom);
     memoryKK->create_kokkos(k_eatom, eatom, maxeatom, "pair:eatom");
-    d_eatom = k_eatom.view<DeviceType>();
   }
   if (vflag_atom) {
     memoryKK->destroy_kokkos(k_vatom, vatom);
     memoryKK->create_kokkos(k_vatom, vatom, maxvatom, "pair:vatom");
-    d_vatom = k_vatom.view<DeviceType>();
   }
-
-  atomKK->sync(execution_space, datamask_read);
-  if (eflag || vflag)
-    atomKK->modified(execution_space, datamask_modify);
-  else
-    atomKK->modified(execution_space, F_MASK | TORQUE_MASK);
-
-  x = atomKK->k_x.view<DeviceType>();
-  v = atomKK->k_v.view<DeviceType>();
-  omega = atomKK->k_omega.view<DeviceType>();
-  f = atomKK->k_f.view<DeviceType>();
-  torque = atomKK->k_torque.view<DeviceType>();
-  type = atomKK->k_type.view<DeviceType>();
-  radius = atomKK->k_radius.view<DeviceType>();
-  tag = atomKK->k_tag.view<DeviceType>();
-  nlocal = atom->nlocal;
-  if (!k_broken.d_view.data()) k_broken = Kokkos::DualView<tagint[2], DeviceType>("pair:broken");
-  d_broken = k_broken.template view<DeviceType>();
-  newton_pair = force->newton_pair;
-
-  k_params.template sync<DeviceType>();
-  params = k_params.template view<DeviceType>();
-
-  NeighListKokkos<DeviceType> *k_list = static_cast<NeighListKokkos<DeviceType> *>(list);
-  d_numneigh = k_list->d_numneigh;
-  d_neighbors = k_list->d_neighbors;
-  d_ilist = k_list->d_ilist;
+  atomKK->sync(execution_space,
+               X_MASK | V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | TYPE_MASK | RADIUS_MASK | TAG_MASK);
+  k_coeffs.template sync<DeviceType>();
   fix_historyKK->k_firstflag.template sync<DeviceType>();
   fix_historyKK->k_firstvalue.template sync<DeviceType>();
-  d_firsttouch = fix_historyKK->k_firstflag.template view<DeviceType>();
-  d_firstxi = fix_historyKK->k_firstvalue.template view<DeviceType>();
+  if (!k_broken.d_view.data()) k_broken = Kokkos::DualView<tagint[2], DeviceType>("pair:broken");
 
-  need_dup = lmp->kokkos->need_dup<DeviceType>();
-  if (need_dup) {
-    dup_f = Kokkos::Experimental::create_scatter_view<Kokkos::Experimental::ScatterSum,
-                                                      Kokkos::Experimental::ScatterDuplicated>(f);
-    dup_torque = Kokkos::Experimental::create_scatter_view<
-        Kokkos::Experimental::ScatterSum, Kokkos::Experimental::ScatterDuplicated>(torque);
-  } else {
-    ndup_f = Kokkos::Experimental::create_scatter_view<
-        Kokkos::Experimental::ScatterSum, Kokkos::Experimental::ScatterNonDuplicated>(f);
-    ndup_torque = Kokkos::Experimental::create_scatter_view<
-        Kokkos::Experimental::ScatterSum, Kokkos::Experimental::ScatterNonDuplicated>(torque);
-  }
-
-  const int inum = list->inum;
-  const int evf = (eflag || vflag || track_dissipation) ? 1 : 0;
-  EV_FLOAT ev;
-#define PW_LAUNCH(NF, NP)                                                 \
-  if (evf) {                                                              \
-    if (update_history) launch<NF, NP, 1, 1>(inum, ev);                   \
-    else launch<NF, NP, 1, 0>(inum, ev);                                  \
-  } else {                                                                \
-    if (update_history) launch<NF, NP, 0, 1>(inum, ev);                   \
-    else launch<NF, NP, 0, 0>(inum, ev);                                  \
+  const bool tally = eflag_in || vflag_in || style.dissipation;
+  const bool update_history = !update->setupflag;
+#define PW_LAUNCH(NF)                                    \
+  if (tally) {                                           \
+    if (update_history) launch<NF, 1, 1>();              \
+    else launch<NF, 1, 0>();                             \
+  } else {                                               \
+    if (update_history) launch<NF, 0, 1>();              \
+    else launch<NF, 0, 0>();                             \
   }
   // newton off only (see init_style)
-  if (neighflag == HALF) {
-    PW_LAUNCH(HALF, 0)
+  if (lmp->kokkos->neighflag == HALF) {
+    PW_LAUNCH(HALF)
   } else {
-    PW_LAUNCH(HALFTHREAD, 0)
+    PW_LAUNCH(HALFTHREAD)
   }
 #undef PW_LAUNCH
+  atomKK->modified(execution_space, F_MASK | TORQUE_MASK);
+  fix_historyKK->k_firstflag.template modify<DeviceType>();
+  fix_historyKK->k_firstvalue.template modify<DeviceType>();
 
   // a broken contact found in the kernel stops the run here, naming the grains
   k_broken.template modify<DeviceType>();
@@ -196,20 +358,9 @@ template <class DeviceType> void PairLinearCoulombKokkos<DeviceType>::compute(in
                "Pair linear/coulomb/kk: at step {} grains {} and {} overlap by more than "
                "overlap_limit {} of the smaller radius (or not finite): the time step is too "
                "large for kn, or the run has blown up",
-               update->ntimestep, k_broken.h_view(0), k_broken.h_view(1), overlap_limit);
+               update->ntimestep, k_broken.h_view(0), k_broken.h_view(1), style.overlap_limit);
 
-  if (need_dup) {
-    Kokkos::Experimental::contribute(f, dup_f);
-    Kokkos::Experimental::contribute(torque, dup_torque);
-    dup_f = DupForce();    // free the per-thread copies between steps
-    dup_torque = DupForce();
-  }
-
-  if (eflag_global) eng_vdwl += ev.evdwl;
-  if (track_dissipation) dissipated += ev.ecoul;
   pvector[0] = dissipated;
-  if (vflag_global)
-    for (int n = 0; n < 6; n++) virial[n] += ev.v[n];
   if (eflag_atom) {
     k_eatom.template modify<DeviceType>();
     k_eatom.template sync<LMPHostType>();
@@ -218,166 +369,59 @@ template <class DeviceType> void PairLinearCoulombKokkos<DeviceType>::compute(in
     k_vatom.template modify<DeviceType>();
     k_vatom.template sync<LMPHostType>();
   }
-  copymode = 0;
 }
 
 template <class DeviceType>
-template <int NEIGHFLAG, int NEWTON_PAIR, int EVFLAG, int UPDATE_HISTORY>
-void PairLinearCoulombKokkos<DeviceType>::launch(int inum, EV_FLOAT &ev)
+template <int NEIGHFLAG, int EVFLAG, int UPDATE_HISTORY>
+void PairLinearCoulombKokkos<DeviceType>::launch()
 {
-  typedef TagPairLinearCoulombCompute<NEIGHFLAG, NEWTON_PAIR, EVFLAG, UPDATE_HISTORY> Tag;
+  typedef SweepKernel<DeviceType, NEIGHFLAG, EVFLAG, UPDATE_HISTORY> Kernel;
+  NeighListKokkos<DeviceType> *k_list = static_cast<NeighListKokkos<DeviceType> *>(list);
+  Kernel kernel;
+  kernel.x = atomKK->k_x.view<DeviceType>();
+  kernel.v = atomKK->k_v.view<DeviceType>();
+  kernel.omega = atomKK->k_omega.view<DeviceType>();
+  kernel.type = atomKK->k_type.view<DeviceType>();
+  kernel.radius = atomKK->k_radius.view<DeviceType>();
+  kernel.tag = atomKK->k_tag.view<DeviceType>();
+  kernel.ilist = k_list->d_ilist;
+  kernel.numneigh = k_list->d_numneigh;
+  kernel.neighbors = k_list->d_neighbors;
+  kernel.touch = fix_historyKK->k_firstflag.template view<DeviceType>();
+  kernel.springs = fix_historyKK->k_firstvalue.template view<DeviceType>();
+  kernel.coeffs = k_coeffs.template view<DeviceType>();
+  kernel.f = Kokkos::Experimental::create_scatter_view<Kokkos::Experimental::ScatterSum,
+                                                       typename Kernel::Dup>(atomKK->k_f.view<DeviceType>());
+  kernel.torque = Kokkos::Experimental::create_scatter_view<Kokkos::Experimental::ScatterSum,
+                                                            typename Kernel::Dup>(
+      atomKK->k_torque.view<DeviceType>());
+  if (eflag_atom) kernel.eatom = k_eatom.template view<DeviceType>();
+  if (vflag_atom) kernel.vatom = k_vatom.template view<DeviceType>();
+  kernel.broken_tags = k_broken.template view<DeviceType>();
+  kernel.contact = contact_step();
+  kernel.limit = style.overlap_limit;
+  kernel.nlocal = atom->nlocal;
+  kernel.tracking = style.dissipation ? 1 : 0;
+  kernel.eflag_global = eflag_global;
+  kernel.vflag_global = vflag_global;
+  kernel.eflag_atom = eflag_atom;
+  kernel.vflag_atom = vflag_atom;
+
+  PairTally sums;
+  const Kokkos::RangePolicy<DeviceType> grains(0, list->inum);
   if (EVFLAG)
-    Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType, Tag>(0, inum), *this, ev);
+    Kokkos::parallel_reduce("pair linear/coulomb", grains, kernel, sums);
   else
-    Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType, Tag>(0, inum), *this);
-}
+    Kokkos::parallel_for("pair linear/coulomb", grains, kernel);
+  typename ArrayTypes<DeviceType>::t_f_array f = atomKK->k_f.view<DeviceType>();
+  typename ArrayTypes<DeviceType>::t_f_array torque = atomKK->k_torque.view<DeviceType>();
+  Kokkos::Experimental::contribute(f, kernel.f);
+  Kokkos::Experimental::contribute(torque, kernel.torque);
 
-/* ---------------------------------------------------------------------- */
-
-template <class DeviceType>
-template <int NEIGHFLAG, int NEWTON_PAIR, int EVFLAG, int UPDATE_HISTORY>
-KOKKOS_FORCEINLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
-    TagPairLinearCoulombCompute<NEIGHFLAG, NEWTON_PAIR, EVFLAG, UPDATE_HISTORY>, const int ii,
-    EV_FLOAT &ev) const
-{
-  // threads sharing j (HALFTHREAD) write per-thread copies on OpenMP, atomically on GPUs
-  typedef ScatterPick<typename NeedDup<NEIGHFLAG, DeviceType>::value> Pick;
-  const auto &v_f = Pick::get(dup_f, ndup_f);
-  const auto &v_torque = Pick::get(dup_torque, ndup_torque);
-  auto a_f = v_f.template access<typename AtomicDup<NEIGHFLAG, DeviceType>::value>();
-  auto a_torque = v_torque.template access<typename AtomicDup<NEIGHFLAG, DeviceType>::value>();
-
-  const int i = d_ilist[ii];
-  const double xtmp = x(i, 0), ytmp = x(i, 1), ztmp = x(i, 2);
-  const double radi = radius[i];
-  const int itype = type[i];
-  double fx_i = 0.0, fy_i = 0.0, fz_i = 0.0;    // scalars, not arrays: kept in registers
-  double tx_i = 0.0, ty_i = 0.0, tz_i = 0.0;
-  bool closed_any = false;    // most grains have no closed contact in their half list
-
-  const int jnum = d_numneigh[i];
-  for (int jj = 0; jj < jnum; jj++) {
-    const int j = d_neighbors(i, jj) & NEIGHMASK;
-    const double delx = xtmp - x(j, 0);
-    const double dely = ytmp - x(j, 1);
-    const double delz = ztmp - x(j, 2);
-    const double rsq = delx * delx + dely * dely + delz * delz;
-    const double radj = radius[j];
-    const double radsum = radi + radj;
-    // dissipation is tallied on the EV path; ev.ecoul carries it
-    const bool tally_loss = EVFLAG && track_dissipation;
-    if (rsq >= radsum * radsum) {    // an open contact forgets its history
-      if (tally_loss && d_firsttouch(i, jj)) {
-        const double xi_open[3] = {d_firstxi(i, 3 * jj), d_firstxi(i, 3 * jj + 1),
-                                   d_firstxi(i, 3 * jj + 2)};
-        ev.ecoul += porewater::pair_share(j, nlocal, NEWTON_PAIR) *
-            porewater::opening_loss(params(itype, type[j]).kt, xi_open);
-      }
-      if (d_firsttouch(i, jj)) {    // most stay apart: no stores (flag 0 means history 0)
-        d_firsttouch(i, jj) = 0;
-        d_firstxi(i, 3 * jj) = 0.0;
-        d_firstxi(i, 3 * jj + 1) = 0.0;
-        d_firstxi(i, 3 * jj + 2) = 0.0;
-      }
-      continue;
-    }
-    d_firsttouch(i, jj) = 1;
-    const ContactParams &p = params(itype, type[j]);
-    // velocities are read only for closed contacts (few of the neighbors in a granular flow)
-    const double vi[3] = {v(i, 0), v(i, 1), v(i, 2)};
-    const double wi[3] = {omega(i, 0), omega(i, 1), omega(i, 2)};
-    const double vj[3] = {v(j, 0), v(j, 1), v(j, 2)};
-    const double wj[3] = {omega(j, 0), omega(j, 1), omega(j, 2)};
-    double xi[3] = {d_firstxi(i, 3 * jj), d_firstxi(i, 3 * jj + 1), d_firstxi(i, 3 * jj + 2)};
-    const ContactForce c = porewater::linear_coulomb_contact(
-        delx, dely, delz, rsq, radi, radj, vi, vj, wi, wj, p.kn, p.kt, p.mu, lever, UPDATE_HISTORY,
-        dt, xi, p.frictional);
-    if (porewater::contact_is_broken(c.overlap, radi, radj, overlap_limit)) {
-      d_broken(0) = tag[i];    // any one broken contact will do for the message
-      d_broken(1) = tag[j];
-    }
-    d_firstxi(i, 3 * jj) = xi[0];
-    d_firstxi(i, 3 * jj + 1) = xi[1];
-    d_firstxi(i, 3 * jj + 2) = xi[2];
-    if (tally_loss)
-      ev.ecoul += porewater::pair_share(j, nlocal, NEWTON_PAIR) * porewater::spring_loss(p.kt, c, xi);
-
-    closed_any = true;
-    fx_i += c.f[0];
-    fy_i += c.f[1];
-    fz_i += c.f[2];
-    if (p.frictional) {    // a frictionless pair has no torque
-      tx_i -= c.lever_i * c.tor[0];
-      ty_i -= c.lever_i * c.tor[1];
-      tz_i -= c.lever_i * c.tor[2];
-    }
-    if (NEWTON_PAIR || j < nlocal) {
-      a_f(j, 0) -= c.f[0];
-      a_f(j, 1) -= c.f[1];
-      a_f(j, 2) -= c.f[2];
-      if (p.frictional) {
-        a_torque(j, 0) -= c.lever_j * c.tor[0];
-        a_torque(j, 1) -= c.lever_j * c.tor[1];
-        a_torque(j, 2) -= c.lever_j * c.tor[2];
-      }
-    }
-    if (EVFLAG)
-      tally<NEIGHFLAG, NEWTON_PAIR>(ev, i, j, porewater::contact_energy(p.kn, p.kt, c, xi), c.f,
-                                    delx, dely, delz);
-  }
-  if (!closed_any) return;
-  a_f(i, 0) += fx_i;
-  a_f(i, 1) += fy_i;
-  a_f(i, 2) += fz_i;
-  a_torque(i, 0) += tx_i;
-  a_torque(i, 1) += ty_i;
-  a_torque(i, 2) += tz_i;
-}
-
-template <class DeviceType>
-template <int NEIGHFLAG, int NEWTON_PAIR, int EVFLAG, int UPDATE_HISTORY>
-KOKKOS_FORCEINLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::operator()(
-    TagPairLinearCoulombCompute<NEIGHFLAG, NEWTON_PAIR, EVFLAG, UPDATE_HISTORY> tag,
-    const int ii) const
-{
-  EV_FLOAT ev;
-  this->operator()(tag, ii, ev);
-}
-
-/* ----------------------------------------------------------------------
-   energy and virial of one pair, split as Pair::ev_tally_xyz does
-------------------------------------------------------------------------- */
-
-template <class DeviceType>
-template <int NEIGHFLAG, int NEWTON_PAIR>
-KOKKOS_INLINE_FUNCTION void PairLinearCoulombKokkos<DeviceType>::tally(
-    EV_FLOAT &ev, int i, int j, double energy, const double *fij, double delx, double dely,
-    double delz) const
-{
-  const double vir[6] = {delx * fij[0], dely * fij[1], delz * fij[2],
-                         delx * fij[1], delx * fij[2], dely * fij[2]};
-  // share of this pair owned here: all of it with newton, else half per owned grain
-  const double share = NEWTON_PAIR ? 1.0 : 0.5 * ((i < nlocal) + (j < nlocal));
-  if (eflag_global) ev.evdwl += share * energy;
+  if (eflag_global) eng_vdwl += sums.energy;
   if (vflag_global)
-    for (int n = 0; n < 6; n++) ev.v[n] += share * vir[n];
-
-  if (eflag_atom) {
-    Kokkos::View<E_FLOAT *, typename DAT::t_efloat_1d::array_layout,
-                 typename KKDevice<DeviceType>::value, Kokkos::MemoryTraits<AtomicF<NEIGHFLAG>::value>>
-        a_eatom = d_eatom;
-    if (NEWTON_PAIR || i < nlocal) a_eatom[i] += 0.5 * energy;
-    if (NEWTON_PAIR || j < nlocal) a_eatom[j] += 0.5 * energy;
-  }
-  if (vflag_atom) {
-    Kokkos::View<F_FLOAT *[6], typename DAT::t_virial_array::array_layout,
-                 typename KKDevice<DeviceType>::value, Kokkos::MemoryTraits<AtomicF<NEIGHFLAG>::value>>
-        a_vatom = d_vatom;
-    for (int n = 0; n < 6; n++) {
-      if (NEWTON_PAIR || i < nlocal) a_vatom(i, n) += 0.5 * vir[n];
-      if (NEWTON_PAIR || j < nlocal) a_vatom(j, n) += 0.5 * vir[n];
-    }
-  }
+    for (int n = 0; n < 6; n++) virial[n] += sums.virial[n];
+  dissipated += sums.dissipated;
 }
 
 namespace LAMMPS_NS {

@@ -90,7 +90,7 @@ TEST(FixDarcyInterpolate, BadValueNamesTheKeyword)
   moving_grains(l, "step", "");
   pwtest::expect_error(l, "fix bad all darcy/pressure grid 2 2 2 viscosity 1 compressibility 1 "
                           "density 1 permeability 1 interpolate always",
-                       "interpolate must be step or fluid, got always");
+                       "interpolate expects step or fluid, got 'always'");
 }
 
 TEST(FixDarcyInterpolate, KokkosHoldsTheSameForcesAsTheCpuFix)

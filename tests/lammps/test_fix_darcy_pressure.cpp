@@ -499,23 +499,23 @@ TEST(FixDarcyPressure, BadInputGivesClearErrors)
   empty_column(l, 1.0);
   const std::string fix = "fix bad all darcy/pressure grid 2 2 4";
   expect_error(l, fix + " viscosity 1 density 1 permeability 1",
-               "grid, viscosity, compressibility, density and permeability are required");
+               "missing required keyword(s): compressibility");
   expect_error(l, fix + unit_diffusivity + " porosity 0.2 1.0", "porosity MIN MAX needs 0 < MIN <= MAX < 1");
-  expect_error(l, fix + unit_diffusivity + " bottom closed", "bottom expects noflow, a pressure or v_name, got 'closed'");
-  expect_error(l, fix + unit_diffusivity + " top closed", "top expects noflow, a pressure or v_name, got 'closed'");
+  expect_error(l, fix + unit_diffusivity + " bottom closed", "bottom expects noflow, a finite number or v_name, got 'closed'");
+  expect_error(l, fix + unit_diffusivity + " top closed", "top expects noflow, a finite number or v_name, got 'closed'");
   expect_error(l, fix + unit_diffusivity + " every 0", "every expects an integer >= 1, got '0'");
-  expect_error(l, fix + unit_diffusivity + " viscosity -1", "viscosity must be > 0");
-  expect_error(l, fix + unit_diffusivity + " gravity 0 0", "expected gravity gx gy gz");
-  expect_error(l, fix + unit_diffusivity + " damping 1", "unknown keyword damping");
+  expect_error(l, fix + unit_diffusivity + " viscosity -1", "viscosity expects a finite number > 0, got '-1'");
+  expect_error(l, fix + unit_diffusivity + " gravity 0 0", "gravity expects a finite number, but the command ends there");
+  expect_error(l, fix + unit_diffusivity + " damping 1", "unknown keyword 'damping' (allowed: grid, viscosity,");
   expect_error(l, "fix bad all darcy/pressure grid 2 0 4" + unit_diffusivity, "grid expects an integer >= 1, got '0'");
 
   // variables are checked when the run starts
   l.command(fix + unit_diffusivity + " top v_nowhere");
-  expect_error(l, "run 0", "variable nowhere does not exist");
+  expect_error(l, "run 0", "variable nowhere for top does not exist");
   l.command("unfix bad");
   l.command("variable atomic atom x");
   l.command(fix + unit_diffusivity + " ztop v_atomic");
-  expect_error(l, "run 0", "variable atomic is not equal-style");
+  expect_error(l, "run 0", "variable atomic for ztop is not equal-style");
   l.command("unfix bad");
 
   // a solve that cannot reach its tolerance stops the run and says where and why (last:

@@ -292,10 +292,10 @@ TEST(FixNVESphereTY3, BadInputGivesClearErrors)
   {
     Lammps l;
     l.commands(pwtest::dense_gas(3));
-    expect_error(l, "fix t all nve/sphere/ty3 corrector", "corrector needs a value (yes or no)");
+    expect_error(l, "fix t all nve/sphere/ty3 corrector", "corrector expects yes or no, but the command ends there");
     expect_error(l, "fix t all nve/sphere/ty3 corrector maybe",
-                 "corrector must be yes or no, not maybe");
-    expect_error(l, "fix t all nve/sphere/ty3 disc", "keyword: disc (allowed: corrector)");
+                 "corrector expects yes or no, got 'maybe'");
+    expect_error(l, "fix t all nve/sphere/ty3 disc", "unknown keyword 'disc' (allowed: corrector)");
   }
   Lammps atomic;    // one instance at a time (see lammps_fixture.h)
   atomic.commands("units lj\natom_style atomic\nregion b block 0 4 0 4 0 4\ncreate_box 1 b\n");

@@ -229,12 +229,12 @@ TEST(FixShearStress, BadInputAndRunawayGiveClearErrors)
 {
   Lammps l;
   free_layer(l, "nve/sphere");
-  expect_error(l, "fix s all shear/stress tau 0.5", "tau and mass are both required");
-  expect_error(l, "fix s all shear/stress tau 0.5 mass", "keyword mass needs a value");
-  expect_error(l, "fix s all shear/stress tau 0.5 mass 0", "mass must be > 0");
-  expect_error(l, "fix s all shear/stress tau v_tau mass 1", "tau must be a number, not v_tau");
+  expect_error(l, "fix s all shear/stress tau 0.5", "missing required keyword(s): mass");
+  expect_error(l, "fix s all shear/stress tau 0.5 mass", "mass expects a number > 0, but the command ends there");
+  expect_error(l, "fix s all shear/stress tau 0.5 mass 0", "mass expects a finite number > 0, got '0'");
+  expect_error(l, "fix s all shear/stress tau v_tau mass 1", "tau expects a finite number, got 'v_tau'");
   expect_error(l, "fix s all shear/stress tau 0.5 mass 1 lock y",
-               "keyword: lock (allowed: tau, mass)");
+               "unknown keyword 'lock' (allowed: tau, mass)");
   expect_error(l, "group none empty\nfix s none shear/stress tau 0.5 mass 1\nrun 0",
                "group none has no grains");
   l.command("unfix s");

@@ -245,22 +245,22 @@ TEST(FixWallStress, BadInputGivesClearErrors)
     Lammps l;
     empty_box(l);
     const std::string fix = "fix w all wall/stress ";
-    expect_error(l, fix + "z 8 stress 0.5 mass 6", "z, stress, mass and kn are all required");
-    expect_error(l, fix + "z 8 stress 0.5 mass 6 kn", "keyword kn needs a value");
-    expect_error(l, fix + "z 8 stress 0.5 mass -6 kn 100", "mass must be > 0");
-    expect_error(l, fix + "z top stress 0.5 mass 6 kn 100", "z must be a number or auto, not top");
+    expect_error(l, fix + "z 8 stress 0.5 mass 6", "missing required keyword(s): kn");
+    expect_error(l, fix + "z 8 stress 0.5 mass 6 kn", "kn expects a number > 0, but the command ends there");
+    expect_error(l, fix + "z 8 stress 0.5 mass -6 kn 100", "mass expects a finite number > 0, got '-6'");
+    expect_error(l, fix + "z top stress 0.5 mass 6 kn 100", "z expects auto or a finite number, got 'top'");
     expect_error(l, fix + "z 8 stress high mass 6 kn 100",
-                 "stress must be a number or v_name, not high");
-    expect_error(l, fix + "z 8 stress 0.5 mass 6 kn stiff", "kn must be a number, not stiff");
-    expect_error(l, fix + "z 8 stress 0.5 mass 6 kn 0", "kn must be > 0");
-    expect_error(l, fix + "z 8 stress 0.5 mass 6 kn 100 damping -1", "damping must be >= 0");
+                 "stress expects a finite number or v_name, got 'high'");
+    expect_error(l, fix + "z 8 stress 0.5 mass 6 kn stiff", "kn expects a finite number > 0, got 'stiff'");
+    expect_error(l, fix + "z 8 stress 0.5 mass 6 kn 0", "kn expects a finite number > 0, got '0'");
+    expect_error(l, fix + "z 8 stress 0.5 mass 6 kn 100 damping -1", "damping expects a finite number >= 0, got '-1'");
     expect_error(l, fix + "z 8 stress 0.5 mass 6 kn 100 wiggle 1",
-                 "keyword: wiggle (allowed: z, stress, mass, kn, damping)");
+                 "unknown keyword 'wiggle' (allowed: z, stress, mass, kn, damping)");
     expect_error(l, fix + "z 8 stress v_nope mass 6 kn 100\nrun 0",
                  "variable nope for stress does not exist");
     l.command("unfix w");
     expect_error(l, "variable perat atom x\n" + fix + "z 8 stress v_perat mass 6 kn 100\nrun 0",
-                 "variable perat for stress must be equal-style");
+                 "variable perat for stress is not equal-style");
     l.command("unfix w");
     expect_error(l, fix + "z auto stress 1 mass 6 kn 100\nrun 0", "z auto needs grains");
     l.command("unfix w");

@@ -369,14 +369,14 @@ TEST(PairLinearCoulomb, BadInputGivesClearErrors)
 {
   Lammps l;
   l.commands(pwtest::dense_gas(3));
-  expect_error(l, "pair_style linear/coulomb lever middle", "lever must be contact or radius");
-  expect_error(l, "pair_style linear/coulomb damping 1", "keyword: damping");
-  expect_error(l, "pair_style linear/coulomb dissipation maybe", "dissipation must be yes or no");
+  expect_error(l, "pair_style linear/coulomb lever middle", "lever expects contact or radius, got 'middle'");
+  expect_error(l, "pair_style linear/coulomb damping 1", "unknown keyword 'damping' (allowed: lever, dissipation, overlap_limit)");
+  expect_error(l, "pair_style linear/coulomb dissipation maybe", "dissipation expects yes or no, got 'maybe'");
   l.command("pair_style linear/coulomb");
   expect_error(l, "pair_coeff * * 1000.0 1000.0", "expected I J kn kt mu");
-  expect_error(l, "pair_coeff * * -1000.0 1000.0 0.5", "kn must be > 0");
-  expect_error(l, "pair_coeff * * 1000.0 -1.0 0.5", "kt must be >= 0");
-  expect_error(l, "pair_coeff * * 1000.0 1000.0 -0.5", "mu must be >= 0");
+  expect_error(l, "pair_coeff * * -1000.0 1000.0 0.5", "kn expects a finite number > 0, got '-1000.0'");
+  expect_error(l, "pair_coeff * * 1000.0 -1.0 0.5", "kt expects a finite number >= 0, got '-1.0'");
+  expect_error(l, "pair_coeff * * 1000.0 1000.0 -0.5", "mu expects a finite number >= 0, got '-0.5'");
 }
 
 TEST(PairLinearCoulomb, NeedsAtomStyleSphere)
@@ -427,5 +427,5 @@ TEST(PairLinearCoulomb, BrokenContactStopsTheRunNamingTheGrains)
              "set type 1 diameter 1.0\nset type 1 density 1.9099\n"
              "pair_style linear/coulomb overlap_limit 1.3\npair_coeff * * 1000.0 1000.0 0.5\n");
   EXPECT_NO_THROW(l.command("run 0"));
-  expect_error(l, "pair_style linear/coulomb overlap_limit 0", "overlap_limit must be in (0, 2]");
+  expect_error(l, "pair_style linear/coulomb overlap_limit 0", "overlap_limit expects a number in (0, 2], got '0'");
 }

@@ -1,6 +1,6 @@
 // Header-only Darcy kernels: hat/trilinear weights, stencil with periodic wrap and
 // mirrored bottom/top, Kozeny-Carman, harmonic mean, clamps.
-#include "darcy_kernels.h"
+#include "darcy/grid.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // The inline physics of fix wall/stress, shear/stress and nve/sphere/ty3 on their own
 // (MODEL.md §2 and §4), without LAMMPS.
-#include "shear_plate.h"
-#include "taylor3.h"
-#include "wall_stress_contact.h"
+#include "walls/shear_plate.h"
+#include "integrate/taylor3.h"
+#include "walls/wall_contact.h"
 
 #include <gtest/gtest.h>
 
@@ -65,7 +65,7 @@ std::vector<double> grain_errors(double dt, bool corrector)
   double a[3] = {-x[0], 0.0, 0.0}, alpha[3] = {0.0, 0.0, 1.0};
   for (int n = 0; n < steps; n++) {
     porewater::ty3_predict_grain(x, v, omega, a, alpha, dt, corrector, h);
-    EXPECT_EQ(h[porewater::TY3_STATE], n == 0 ? porewater::TY3_STARTED : porewater::TY3_RUNNING);
+    EXPECT_EQ(h[porewater::TY3_STATE], n == 0 ? porewater::TY3_STARTUP : porewater::TY3_RUNNING);
     a[0] = -x[0];    // the forces at the new positions
     alpha[2] = std::cos((n + 1) * dt);
     if (corrector) porewater::ty3_correct_grain(v, omega, a, alpha, dt, h);
@@ -125,5 +125,5 @@ TEST(Taylor3, FirstStepOfAGrainTakesNoJerk)
   EXPECT_EQ(omega[1], 4.0 * 0.5);
   EXPECT_EQ(h[porewater::TY3_A_PREV], 2.0);
   EXPECT_EQ(h[porewater::TY3_A_STEP], 0.0);
-  EXPECT_EQ(h[porewater::TY3_STATE], porewater::TY3_STARTED);
+  EXPECT_EQ(h[porewater::TY3_STATE], porewater::TY3_STARTUP);
 }

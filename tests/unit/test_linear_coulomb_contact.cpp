@@ -1,5 +1,5 @@
-// The contact law of pair linear/coulomb on its own (MODEL.md §1), without LAMMPS.
-#include "linear_coulomb_contact.h"
+// The contact law of pair linear/coulomb on its own (doc/model.md §1), without LAMMPS.
+#include "contact/linear_coulomb.h"
 
 #include <gtest/gtest.h>
 
@@ -8,10 +8,19 @@
 using porewater::ContactForce;
 using porewater::LEVER_CONTACT;
 using porewater::LEVER_RADIUS;
-using porewater::linear_coulomb_contact;
 
 namespace {
 const double zero3[3] = {0.0, 0.0, 0.0};
+
+// grain i at distance r above a grain j at rest along +z (n = +z)
+ContactForce linear_coulomb_contact(double r, double radi, double radj, const double *vi,
+                                    const double *wi, double kn, double kt, double mu, int lever,
+                                    int update_history, double dt, double *xi)
+{
+  const porewater::ContactPair pair{0.0, 0.0, r, r * r, radi, radj, vi, zero3, wi, zero3};
+  return porewater::linear_coulomb_contact(pair, porewater::contact_coeffs(kn, kt, mu),
+                                           porewater::ContactStep{lever, update_history, dt}, xi);
+}
 
 double norm(const double *a)
 {
@@ -24,8 +33,7 @@ TEST(LinearCoulombContact, NormalSpringIsKnTimesOverlapAlongN)
   // i above j along z, overlap 0.01
   const double r = 0.99, kn = 1000.0;
   double xi[3] = {0, 0, 0};
-  const ContactForce c = linear_coulomb_contact(0, 0, r, r * r, 0.5, 0.5, zero3, zero3, zero3,
-                                                zero3, kn, kn, 0.5, LEVER_CONTACT, 1, 1e-3, xi);
+  const ContactForce c = linear_coulomb_contact(r, 0.5, 0.5, zero3, zero3, kn, kn, 0.5, LEVER_CONTACT, 1, 1e-3, xi);
   EXPECT_NEAR(c.f[2], kn * 0.01, 1e-12);    // pushes i away from j (+z)
   EXPECT_EQ(c.f[0], 0.0);
   EXPECT_EQ(c.f[1], 0.0);
@@ -43,15 +51,13 @@ TEST(LinearCoulombContact, RollingWithoutSlipBuildsNoTangentialSpring)
     const double wi_roll[3] = {0.0, vi[0] / ell, 0.0};
     double xi[3] = {0, 0, 0};
     for (int step = 0; step < 10; step++)
-      linear_coulomb_contact(0, 0, r, r * r, rad, rad, vi, zero3, wi_roll, zero3, 1e3, 1e3, 0.5,
-                             lever, 1, 1e-3, xi);
+      linear_coulomb_contact(r, rad, rad, vi, wi_roll, 1e3, 1e3, 0.5, lever, 1, 1e-3, xi);
     EXPECT_LT(norm(xi), 1e-15) << "lever " << lever;
 
     // spinning the other way slips at twice the speed: the spring must load
     const double wi_skid[3] = {0.0, -vi[0] / ell, 0.0};
     double xi2[3] = {0, 0, 0};
-    linear_coulomb_contact(0, 0, r, r * r, rad, rad, vi, zero3, wi_skid, zero3, 1e3, 1e3, 0.5,
-                           lever, 1, 1e-3, xi2);
+    linear_coulomb_contact(r, rad, rad, vi, wi_skid, 1e3, 1e3, 0.5, lever, 1, 1e-3, xi2);
     EXPECT_NEAR(xi2[0], 2 * vi[0] * 1e-3, 1e-15);
   }
 }
@@ -61,8 +67,7 @@ TEST(LinearCoulombContact, CoulombCapResetsTheSpringToTheLimit)
   const double r = 0.99, kn = 1000.0, kt = 1000.0, mu = 0.5;
   const double vi[3] = {5.0, 0.0, 0.0};    // large sliding speed
   double xi[3] = {0, 0, 0};
-  const ContactForce c = linear_coulomb_contact(0, 0, r, r * r, 0.5, 0.5, vi, zero3, zero3, zero3,
-                                                kn, kt, mu, LEVER_CONTACT, 1, 1e-3, xi);
+  const ContactForce c = linear_coulomb_contact(r, 0.5, 0.5, vi, zero3, kn, kt, mu, LEVER_CONTACT, 1, 1e-3, xi);
   const double fn = kn * 0.01;
   EXPECT_NEAR(norm(c.ft), mu * fn, 1e-12);
   EXPECT_LT(c.ft[0], 0.0);    // friction opposes the sliding
@@ -74,8 +79,7 @@ TEST(LinearCoulombContact, HistoryIsProjectedOntoTheNewTangentPlane)
   // a stored spring with a normal component loses it, without rescaling
   const double r = 0.99;
   double xi[3] = {1e-4, 0.0, 2e-4};
-  linear_coulomb_contact(0, 0, r, r * r, 0.5, 0.5, zero3, zero3, zero3, zero3, 1e3, 1e3, 10.0,
-                         LEVER_CONTACT, 1, 1e-3, xi);
+  linear_coulomb_contact(r, 0.5, 0.5, zero3, zero3, 1e3, 1e3, 10.0, LEVER_CONTACT, 1, 1e-3, xi);
   EXPECT_DOUBLE_EQ(xi[0], 1e-4);
   EXPECT_NEAR(xi[2], 0.0, 1e-20);
 }
@@ -86,8 +90,7 @@ TEST(LinearCoulombContact, TorquesUseEachGrainsLeverArm)
   const double radi = 0.6, radj = 0.3, overlap = 0.03, r = radi + radj - overlap;
   const double vi[3] = {0.1, 0.0, 0.0};
   double xi[3] = {0, 0, 0};
-  const ContactForce c = linear_coulomb_contact(0, 0, r, r * r, radi, radj, vi, zero3, zero3,
-                                                zero3, 1e3, 1e3, 0.5, LEVER_CONTACT, 1, 1e-2, xi);
+  const ContactForce c = linear_coulomb_contact(r, radi, radj, vi, zero3, 1e3, 1e3, 0.5, LEVER_CONTACT, 1, 1e-2, xi);
   EXPECT_DOUBLE_EQ(c.lever_i, radi - overlap / 2);
   EXPECT_DOUBLE_EQ(c.lever_j, radj - overlap / 2);
   // n = +z, f_t along −x: n × f_t along −y, so T_i along +y: i spins to roll along +x
@@ -100,7 +103,6 @@ TEST(LinearCoulombContact, SetupDoesNotIntegrateTheSpring)
   const double r = 0.99;
   const double vi[3] = {0.1, 0.0, 0.0};
   double xi[3] = {0, 0, 0};
-  linear_coulomb_contact(0, 0, r, r * r, 0.5, 0.5, vi, zero3, zero3, zero3, 1e3, 1e3, 0.5,
-                         LEVER_CONTACT, 0, 1e-3, xi);
+  linear_coulomb_contact(r, 0.5, 0.5, vi, zero3, 1e3, 1e3, 0.5, LEVER_CONTACT, 0, 1e-3, xi);
   EXPECT_EQ(norm(xi), 0.0);
 }

@@ -1,8 +1,9 @@
-// The third-order Taylor step (TY3) of MODEL.md §2 for one Cartesian component, shared by
-// fix nve/sphere/ty3, its KOKKOS variant and the unit tests. The jerk is the backward
+// The third-order Taylor step (TY3) of doc/model.md §2, shared by fix nve/sphere/ty3, its
+// KOKKOS variant and the unit tests: per component, per grain, and as per-grain kernels
+// over a grain accessor G (grains/host_grains.h). The jerk is the backward
 // difference ȧ ≈ (a − a_prev)/Δt, so ȧΔt = a − a_prev appears below.
-#ifndef PW_TAYLOR3_H
-#define PW_TAYLOR3_H
+#ifndef PW_INTEGRATE_TAYLOR3_H
+#define PW_INTEGRATE_TAYLOR3_H
 
 #include "pw_inline.h"
 
@@ -66,7 +67,8 @@ enum Ty3Column {
   TY3_COLUMNS = 7,        // without the corrector
   TY3_COLUMNS_CORRECTOR = 13
 };
-enum Ty3State { TY3_NO_HISTORY = 0, TY3_STARTED = 1, TY3_RUNNING = 2 };
+// TY3_STARTUP: the last predictor step was a start-up step (no a_prev: jerk taken as 0)
+enum Ty3State { TY3_NO_HISTORY = 0, TY3_STARTUP = 1, TY3_RUNNING = 2 };
 
 // Before the forces: x, v, ω to t+Δt from a(t) and the history. Without history (a new
 // grain, a new step size) the jerk is taken as zero.
@@ -74,10 +76,10 @@ PW_INLINE void ty3_predict_grain(double *x, double *v, double *omega, const doub
                                  const double *alpha, const double dt, const int corrector,
                                  double *h)
 {
-  const bool started = h[TY3_STATE] == TY3_NO_HISTORY;
+  const bool startup = h[TY3_STATE] == TY3_NO_HISTORY;
   for (int k = 0; k < 3; k++) {
-    const double a_prev = started ? a[k] : h[TY3_A_PREV + k];
-    const double alpha_prev = started ? alpha[k] : h[TY3_ALPHA_PREV + k];
+    const double a_prev = startup ? a[k] : h[TY3_A_PREV + k];
+    const double alpha_prev = startup ? alpha[k] : h[TY3_ALPHA_PREV + k];
     x[k] += ty3_displacement(v[k], a[k], a_prev, dt);
     v[k] += ty3_velocity_change(a[k], a_prev, dt);
     omega[k] += ty3_velocity_change(alpha[k], alpha_prev, dt);
@@ -88,16 +90,16 @@ PW_INLINE void ty3_predict_grain(double *x, double *v, double *omega, const doub
     h[TY3_A_PREV + k] = a[k];
     h[TY3_ALPHA_PREV + k] = alpha[k];
   }
-  h[TY3_STATE] = started ? TY3_STARTED : TY3_RUNNING;
+  h[TY3_STATE] = startup ? TY3_STARTUP : TY3_RUNNING;
 }
 
 // After the forces, with the corrector: v and ω corrected with a(t+Δt) = a_new.
 PW_INLINE void ty3_correct_grain(double *v, double *omega, const double *a_new,
                                  const double *alpha_new, const double dt, const double *h)
 {
-  const bool started = h[TY3_STATE] == TY3_STARTED;
+  const bool startup = h[TY3_STATE] == TY3_STARTUP;    // this step's predictor started up
   for (int k = 0; k < 3; k++) {
-    if (started) {
+    if (startup) {
       v[k] += ty3_startup_velocity_correction(a_new[k], h[TY3_A_PREV + k], dt);
       omega[k] += ty3_startup_velocity_correction(alpha_new[k], h[TY3_ALPHA_PREV + k], dt);
     } else {
@@ -107,6 +109,65 @@ PW_INLINE void ty3_correct_grain(double *v, double *omega, const double *a_new,
     }
   }
 }
+
+// ---------------------------------------------------------------------------------------
+// The two hooks of fix nve/sphere/ty3 as per-grain kernels; history(i) is grain i's row.
+
+template <class G> PW_INLINE void grain_accelerations(const G &g, const int i, const double ftm2v,
+                                                     double *a, double *alpha)
+{
+  const double f[3] = {g.f(i, 0), g.f(i, 1), g.f(i, 2)};
+  const double torque[3] = {g.torque(i, 0), g.torque(i, 1), g.torque(i, 2)};
+  sphere_accelerations(ftm2v, g.rmass(i), g.radius(i), f, torque, a, alpha);
+}
+
+// before the forces: x, v, ω to t+Δt
+template <class G, class History> struct Ty3Predict {
+  G g;
+  History history;
+  int groupbit, corrector;
+  double dt, ftm2v;
+  PW_INLINE void operator()(const int i) const
+  {
+    if (!(g.mask(i) & groupbit)) return;
+    double a[3], alpha[3], x[3], v[3], omega[3];
+    grain_accelerations(g, i, ftm2v, a, alpha);
+    for (int k = 0; k < 3; k++) {
+      x[k] = g.x(i, k);
+      v[k] = g.v(i, k);
+      omega[k] = g.omega(i, k);
+    }
+    ty3_predict_grain(x, v, omega, a, alpha, dt, corrector, history(i));
+    for (int k = 0; k < 3; k++) {
+      g.x(i, k) = x[k];
+      g.v(i, k) = v[k];
+      g.omega(i, k) = omega[k];
+    }
+  }
+};
+
+// after the forces, with the corrector: v and ω corrected with a(t+Δt)
+template <class G, class History> struct Ty3Correct {
+  G g;
+  History history;
+  int groupbit;
+  double dt, ftm2v;
+  PW_INLINE void operator()(const int i) const
+  {
+    if (!(g.mask(i) & groupbit)) return;
+    double a[3], alpha[3], v[3], omega[3];
+    grain_accelerations(g, i, ftm2v, a, alpha);
+    for (int k = 0; k < 3; k++) {
+      v[k] = g.v(i, k);
+      omega[k] = g.omega(i, k);
+    }
+    ty3_correct_grain(v, omega, a, alpha, dt, history(i));
+    for (int k = 0; k < 3; k++) {
+      g.v(i, k) = v[k];
+      g.omega(i, k) = omega[k];
+    }
+  }
+};
 
 }    // namespace porewater
 

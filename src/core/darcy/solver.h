@@ -1,17 +1,17 @@
-// LAMMPS-free Darcy pore-pressure solver on a cell-centred grid (MODEL.md §3):
+// Host-free Darcy pore-pressure solver on a cell-centred grid (doc/model.md §3):
 //   dp/dt = 1/(beta phi mu) div(k grad p) - 1/(beta phi (1-phi)) (dphi/dt + vbar . grad phi)
 // Crank-Nicolson for the diffusion, grain forcing explicit, each row scaled by
 // beta phi mu so the system is SPD; Jacobi-preconditioned CG to a stated tolerance.
 //
-// Use per fluid step (the LAMMPS fix does this, with MPI reductions in between):
+// Use per fluid step (DarcyFluid does this, with the sum over ranks in between):
 //   clear_deposits(); deposit every grain at x (or fill solid_volume()/solid_momentum()
-//   yourself and Allreduce them); update_porosity();
-//   clear_deposits(); deposit every grain at x + v*interval; update_dphi_dt(interval);
-//   StepResult r = step(interval, p_top(t+interval), z_top);  then gradient_at(...).
+//   yourself); update_porosity();
+//   fill solid_volume() with the deposits at x + v*interval; update_dphi_dt(interval);
+//   StepResult r = step(interval, p_top(t+interval), z_top);  then pressure_gradient().
 #ifndef PW_DARCY_SOLVER_H
 #define PW_DARCY_SOLVER_H
 
-#include "darcy_kernels.h"
+#include "darcy/grid.h"
 
 #include <vector>
 
@@ -61,6 +61,10 @@ class DarcySolver {
  public:
   DarcySolver(const GridGeom &geom, const DarcyParams &params);
 
+  // what a solver of this grid holds: per-cell fields and work arrays, per-column faces
+  static double bytes_for(const GridGeom &geom);
+  double bytes() const;
+
   const GridGeom &geom() const { return geom_; }
   const DarcyParams &params() const { return params_; }
   int ncells() const { return ncells_; }
@@ -70,7 +74,6 @@ class DarcySolver {
   std::vector<double> &solid_volume() { return solid_volume_; }
   std::vector<double> &solid_momentum() { return solid_momentum_; }
   void clear_deposits();
-  void deposit(double x, double y, double z, double volume, double vx, double vy, double vz);
 
   // phi = clamp(1 - solid_volume/V_cell), vbar = momentum/solid_volume (0 where no
   // solid), k = Kozeny-Carman(phi). The previous phi is kept for update_dphi_dt.
@@ -115,16 +118,13 @@ class DarcySolver {
   // The same for a Dirichlet bottom whose pressure changes in time.
   void set_pressure(const std::vector<double> &p, double p_top, double p_bottom);
 
-  // grad p at a point, interpolated from the cell-centre gradients with the stencil.
-  void gradient_at(double x, double y, double z, double grad[3]) const;
-
   // ---- restart: [nx, ny, nz, porosity_updates, p_top, active_layers, p_bottom,
   // p(ncells), phi(ncells), balance (stored, boundary, grains, allowance)], phi being that
   // of the last update_porosity (it becomes phi(t-dt) of the next central difference).
-  // set_state also takes a state without the balance (older restarts: balance from 0);
-  // it returns false on a grid mismatch.
+  // set_state returns false if the state is not one of this grid.
   std::vector<double> state() const;
   bool set_state(const std::vector<double> &state);
+  static size_t state_size(const GridGeom &geom);
 
  private:
   int layers_below(double z_top) const;

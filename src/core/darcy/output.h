@@ -1,9 +1,9 @@
 // Text output of the Darcy grid for fix darcy/pressure: x-y averaged z-profiles and legacy
-// VTK files for ParaView. LAMMPS-free; the fix calls these on one rank.
+// VTK files for ParaView. Host-free; DarcyFluid writes them on one rank.
 #ifndef PW_DARCY_OUTPUT_H
 #define PW_DARCY_OUTPUT_H
 
-#include "darcy_solver.h"
+#include "darcy/solver.h"
 
 #include <cstdio>
 #include <string>

@@ -1,5 +1,6 @@
-// Registers every style of the package, and the KOKKOS variants, with LAMMPS'
-// `plugin load porewater.so`.
+// Registers every style of the package, and its KOKKOS variants where this LAMMPS has the
+// KOKKOS package, with LAMMPS' `plugin load porewater.so`. The only file that includes
+// every style.
 
 #include "lammpsplugin.h"
 #include "version.h"
@@ -8,16 +9,26 @@
 #include "pair.h"
 
 #include "fix_darcy_pressure.h"
-#include "fix_darcy_pressure_kokkos.h"
 #include "fix_nve_sphere_ty3.h"
-#include "fix_nve_sphere_ty3_kokkos.h"
 #include "fix_shear_stress.h"
-#include "fix_shear_stress_kokkos.h"
 #include "fix_wall_stress.h"
-#include "fix_wall_stress_kokkos.h"
-
 #include "pair_linear_coulomb.h"
+
+#ifdef LMP_KOKKOS
+#include "fix_darcy_pressure_kokkos.h"
+#include "fix_nve_sphere_ty3_kokkos.h"
+#include "fix_shear_stress_kokkos.h"
+#include "fix_wall_stress_kokkos.h"
 #include "pair_linear_coulomb_kokkos.h"
+#else
+namespace LAMMPS_NS {    // named by the registration, never instantiated without KOKKOS
+template <class> class FixDarcyPressureKokkos;
+template <class> class FixNVESphereTY3Kokkos;
+template <class> class FixShearStressKokkos;
+template <class> class FixWallStressKokkos;
+template <class> class PairLinearCoulombKokkos;
+}    // namespace LAMMPS_NS
+#endif
 
 #include <list>
 #include <string>
@@ -55,30 +66,31 @@ struct Registrar {
   lammpsplugin_regfunc register_plugin;
   void *handle;
 
-  // `name` builds the CPU class; `name/kk` the default-device KOKKOS class, `name/kk/device`
-  // and `name/kk/host` as in LAMMPS' own KOKKOS package
+  // `name` builds the CPU class; with KOKKOS `name/kk` the default-device KOKKOS class,
+  // `name/kk/device` and `name/kk/host` as in LAMMPS' own KOKKOS package
   template <class Cpu, template <class> class Kokkos_>
   void add_pair(const char *name, const char *info)
   {
-    add_family(
-        "pair", name, info, (void *) &pair_creator<Cpu>,
-        (void *) &pair_creator<Kokkos_<LMPDeviceType>>,
-        (void *) &pair_creator<Kokkos_<LMPHostType>>, false);
+    add("pair", name, info, (void *) &pair_creator<Cpu>, false);
+#ifdef LMP_KOKKOS
+    add_kokkos("pair", name, (void *) &pair_creator<Kokkos_<LMPDeviceType>>,
+               (void *) &pair_creator<Kokkos_<LMPHostType>>, false);
+#endif
   }
   template <class Cpu, template <class> class Kokkos_>
   void add_fix(const char *name, const char *info)
   {
-    add_family("fix", name, info, (void *) &fix_creator<Cpu>,
-               (void *) &fix_creator<Kokkos_<LMPDeviceType>>,
+    add("fix", name, info, (void *) &fix_creator<Cpu>, true);
+#ifdef LMP_KOKKOS
+    add_kokkos("fix", name, (void *) &fix_creator<Kokkos_<LMPDeviceType>>,
                (void *) &fix_creator<Kokkos_<LMPHostType>>, true);
+#endif
   }
 
  private:
-  void add_family(const char *style, const char *name, const char *info, void *cpu,
-                  void *device, void *host, bool v2)
+  void add_kokkos(const char *style, const char *name, void *device, void *host, bool v2)
   {
     const std::string kk = std::string(name) + "/kk", kk_info = std::string(name) + ", KOKKOS";
-    add(style, name, info, cpu, v2);
     add(style, kept(kk), kept(kk_info), device, v2);
     add(style, kept(kk + "/device"), kept(kk_info + " device"), device, v2);
     add(style, kept(kk + "/host"), kept(kk_info + " host"), host, v2);

@@ -1,8 +1,9 @@
-// Header-only physics of the Darcy pore-pressure grid (MODEL.md §3), shared by the CPU
-// solver, the LAMMPS fix and its KOKKOS variant. Everything here is device-safe:
-// PODs, raw pointers, ints, doubles and the <cmath> functions CUDA provides.
-#ifndef PW_DARCY_KERNELS_H
-#define PW_DARCY_KERNELS_H
+// Header-only geometry of the Darcy pore-pressure grid (doc/model.md §3): cells, stencils,
+// Kozeny-Carman, shared by the solver, the grain coupling and the KOKKOS kernels.
+// Everything here is device-safe: PODs, raw pointers, ints, doubles and the <cmath>
+// functions CUDA provides.
+#ifndef PW_DARCY_GRID_H
+#define PW_DARCY_GRID_H
 
 #include "pw_inline.h"
 

@@ -1,11 +1,11 @@
-// The contact law of pair linear/coulomb (MODEL.md §1), written once and called by the
-// CPU style, the KOKKOS style and the unit tests.
+// The contact law of pair linear/coulomb (doc/model.md §1), written once and called by the
+// neighbour sweep (contact_sweep.h) of the CPU and KOKKOS styles and by the unit tests.
 //
 // Operation order deliberately follows LAMMPS 29Sep2021 gran/hooke/history with zero
 // damping, so that `lever radius` reproduces it bit for bit (a chaotic granular flow
 // amplifies any round-off difference).
-#ifndef PW_LINEAR_COULOMB_CONTACT_H
-#define PW_LINEAR_COULOMB_CONTACT_H
+#ifndef PW_CONTACT_LINEAR_COULOMB_H
+#define PW_CONTACT_LINEAR_COULOMB_H
 
 #include "pw_inline.h"
 
@@ -38,38 +38,64 @@ PW_INLINE bool is_frictionless(const double kt, const double mu)
   return kt == 0.0 || mu == 0.0;
 }
 
-// Contact between grains i and j that overlap (rsq < (radi+radj)²).
-// del = x_i − x_j; xi[3] is the tangential spring history, updated in place;
-// update_history = 0 during setup (forces from the stored spring, no integration),
-// as gran/hooke/history does. frictional = !is_frictionless(kt, mu), passed in so that a
-// caller can decide it once per type pair; a frictionless pair skips the spring: f_t = 0 and
-// tor = 0 as the full path gives, xi is cleared (a spring left by an earlier pair_coeff with
-// friction is forgotten, its energy counted in xisq_before).
-PW_INLINE ContactForce linear_coulomb_contact(
-    const double delx, const double dely, const double delz, const double rsq,
-    const double radi, const double radj, const double *vi, const double *vj,
-    const double *wi, const double *wj, const double kn, const double kt, const double mu,
-    const int lever, const int update_history, const double dt, double *xi,
-    const bool frictional)
+// Coefficients of one type pair; frictional = !is_frictionless(kt, mu), decided once per
+// type pair rather than per contact.
+struct ContactCoeffs {
+  double kn, kt, mu;
+  int frictional;
+};
+
+PW_INLINE ContactCoeffs contact_coeffs(const double kn, const double kt, const double mu)
 {
+  return ContactCoeffs{kn, kt, mu, is_frictionless(kt, mu) ? 0 : 1};
+}
+
+// How the law runs in this step: lever arm, whether the spring is integrated
+// (update_history = 0 during setup: forces from the stored spring, as gran/hooke/history
+// does), and the step length.
+struct ContactStep {
+  int lever;
+  int update_history;
+  double dt;
+};
+
+// Two grains i and j that overlap (rsq < (radi+radj)²): del = x_i − x_j, rsq = |del|², and
+// their velocities and angular velocities.
+struct ContactPair {
+  double delx, dely, delz, rsq;
+  double radi, radj;
+  const double *vi, *vj, *wi, *wj;
+};
+
+// The force between them; xi[3] is the tangential spring history, updated in place. A
+// frictionless pair skips the spring: f_t = 0 and tor = 0 as the full path gives, xi is
+// cleared (a spring left by an earlier pair_coeff with friction is forgotten, its energy
+// counted in xisq_before).
+PW_INLINE ContactForce linear_coulomb_contact(const ContactPair &p, const ContactCoeffs &k,
+                                              const ContactStep &step, double *xi)
+{
+  const double delx = p.delx, dely = p.dely, delz = p.delz, rsq = p.rsq;
+  const double *vi = p.vi, *vj = p.vj, *wi = p.wi, *wj = p.wj;
+  const double kn = k.kn, kt = k.kt, mu = k.mu, dt = step.dt;
+  const int update_history = step.update_history;
   ContactForce c;
-  const double radsum = radi + radj;
+  const double radsum = p.radi + p.radj;
   const double r = sqrt(rsq);
   const double rinv = 1.0 / r;
   const double rsqinv = 1.0 / rsq;
   const double overlap = radsum - r;
-  c.lever_i = lever_arm(lever, radi, overlap);
-  c.lever_j = lever_arm(lever, radj, overlap);
+  c.lever_i = lever_arm(step.lever, p.radi, overlap);
+  c.lever_j = lever_arm(step.lever, p.radj, overlap);
 
   // normal force magnitude per unit |del|: k_n δ / r
   const double ccel = kn * overlap * rinv;
   c.ccel = ccel;
   c.overlap = overlap;
 
-  if (!frictional) {
+  if (!k.frictional) {
     c.xisq_before = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
     xi[0] = xi[1] = xi[2] = 0.0;
-    for (int k = 0; k < 3; k++) c.ft[k] = c.tor[k] = 0.0;
+    for (int d = 0; d < 3; d++) c.ft[d] = c.tor[d] = 0.0;
     c.f[0] = delx * ccel;
     c.f[1] = dely * ccel;
     c.f[2] = delz * ccel;
@@ -141,16 +167,6 @@ PW_INLINE ContactForce linear_coulomb_contact(
   return c;
 }
 
-PW_INLINE ContactForce linear_coulomb_contact(
-    const double delx, const double dely, const double delz, const double rsq,
-    const double radi, const double radj, const double *vi, const double *vj,
-    const double *wi, const double *wj, const double kn, const double kt, const double mu,
-    const int lever, const int update_history, const double dt, double *xi)
-{
-  return linear_coulomb_contact(delx, dely, delz, rsq, radi, radj, vi, vj, wi, wj, kn, kt, mu,
-                                lever, update_history, dt, xi, !is_frictionless(kt, mu));
-}
-
 // Elastic energy stored in a contact: ½k_n δ² + ½k_t|ξ|² (ξ as the contact left it).
 PW_INLINE double contact_energy(const double kn, const double kt, const ContactForce &c,
                                 const double *xi)
@@ -164,7 +180,7 @@ PW_INLINE double spring_loss(const double kt, const ContactForce &c, const doubl
   return 0.5 * kt * (c.xisq_before - (xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]));
 }
 
-// Energy a spring of history xi loses when its contact opens (MODEL.md: it is forgotten).
+// Energy a spring of history xi loses when its contact opens (doc/model.md §1: it is forgotten).
 PW_INLINE double opening_loss(const double kt, const double *xi)
 {
   return 0.5 * kt * (xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);

@@ -1,4 +1,4 @@
-#include "darcy_solver.h"
+#include "darcy/solver.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,27 +28,37 @@ DarcySolver::DarcySolver(const GridGeom &geom, const DarcyParams &params) :
   update_permeability();
 }
 
+// ---------------------------------------------------------------- memory
+
+namespace {
+// the per-cell arrays of the constructor: 16 values of fields (vector fields 3 each), 10 of
+// coefficients and CG work; and one bottom-face coefficient per column
+const int DOUBLES_PER_CELL = 1 + 3 + 1 + 1 + 1 + 1 + 1 + 3 + 1 + 3 + 10;
+}    // namespace
+
+double DarcySolver::bytes_for(const GridGeom &geom)
+{
+  return sizeof(double) * (DOUBLES_PER_CELL * (double) cell_count(geom) + (double) geom.nx * geom.ny);
+}
+
+double DarcySolver::bytes() const
+{
+  size_t doubles = 0;
+  for (const std::vector<double> *v :
+       {&solid_volume_, &solid_momentum_, &pressure_, &porosity_, &porosity_previous_,
+        &porosity_next_, &permeability_, &mean_velocity_, &dphi_dt_, &pressure_gradient_,
+        &coef_x_, &coef_y_, &coef_z_, &capacity_, &diag_, &residual_, &update_, &precond_,
+        &direction_, &product_, &coef_bottom_})
+    doubles += v->capacity();
+  return sizeof(double) * (double) doubles;
+}
+
 // ---------------------------------------------------------------- deposition, porosity
 
 void DarcySolver::clear_deposits()
 {
   std::fill(solid_volume_.begin(), solid_volume_.end(), 0.0);
   std::fill(solid_momentum_.begin(), solid_momentum_.end(), 0.0);
-}
-
-void DarcySolver::deposit(double x, double y, double z, double volume, double vx, double vy,
-                          double vz)
-{
-  int idx[8];
-  double w[8];
-  stencil(geom_, x, y, z, idx, w);
-  for (int c = 0; c < 8; ++c) {
-    const double v = w[c] * volume;
-    solid_volume_[idx[c]] += v;
-    solid_momentum_[3 * idx[c] + 0] += v * vx;
-    solid_momentum_[3 * idx[c] + 1] += v * vy;
-    solid_momentum_[3 * idx[c] + 2] += v * vz;
-  }
 }
 
 void DarcySolver::porosity_from_deposits(std::vector<double> &out) const
@@ -304,14 +314,6 @@ void DarcySolver::update_pressure_gradient()
       }
 }
 
-void DarcySolver::gradient_at(double x, double y, double z, double grad[3]) const
-{
-  int idx[8];
-  double w[8];
-  stencil(geom_, x, y, z, idx, w);
-  for (int d = 0; d < 3; ++d) grad[d] = interpolate(pressure_gradient_.data() + d, 3, idx, w);
-}
-
 void DarcySolver::set_pressure(const std::vector<double> &p, double p_top)
 {
   set_pressure(p, p_top, p_bottom_);
@@ -338,12 +340,16 @@ std::vector<double> DarcySolver::state() const
   return s;
 }
 
+size_t DarcySolver::state_size(const GridGeom &geom)
+{
+  return 7 + 2 * size_t(cell_count(geom)) + 4;
+}
+
 bool DarcySolver::set_state(const std::vector<double> &s)
 {
   const size_t header = 7, fields_end = header + 2 * size_t(ncells_);
-  const bool with_balance = s.size() == fields_end + 4;
-  if ((s.size() != fields_end && !with_balance) || int(s[0]) != geom_.nx ||
-      int(s[1]) != geom_.ny || int(s[2]) != geom_.nz)
+  if (s.size() != state_size(geom_) || int(s[0]) != geom_.nx || int(s[1]) != geom_.ny ||
+      int(s[2]) != geom_.nz)
     return false;
   porosity_updates_ = int(s[3]);
   p_top_ = s[4];
@@ -351,9 +357,7 @@ bool DarcySolver::set_state(const std::vector<double> &s)
   p_bottom_ = s[6];
   std::copy(s.begin() + header, s.begin() + header + ncells_, pressure_.begin());
   std::copy(s.begin() + header + ncells_, s.begin() + fields_end, porosity_.begin());
-  balance_ = FluidBalance();
-  if (with_balance)
-    balance_ = FluidBalance{s[fields_end], s[fields_end + 1], s[fields_end + 2], s[fields_end + 3]};
+  balance_ = FluidBalance{s[fields_end], s[fields_end + 1], s[fields_end + 2], s[fields_end + 3]};
   update_permeability();
   update_pressure_gradient();
   return true;

@@ -1,4 +1,4 @@
-#include "darcy_output.h"
+#include "darcy/output.h"
 
 namespace porewater {
 

@@ -1,0 +1,81 @@
+// The bookkeeping of pair linear/coulomb around its contact law, written once: one grain's
+// pass over its half neighbour list. Open contacts forget their spring, closed ones get the
+// law; the spring is kept, the broken-contact check made, the dissipation counted, and the
+// force and torque scattered to both grains (the partner only if this rank owns the pair's
+// force on it). The host loops over grains (a for loop on the CPU, a Kokkos kernel for /kk)
+// and says through its policy P where the data live and where the results go:
+//
+//   P::Sums                  what the loop accumulates (at least the dissipated energy)
+//   p.x(i, d), p.radius(i), p.type(i)
+//   p.neighbors(i)           a row: count, neighbor(jj), touched(jj), touch(jj),
+//                            forget(jj) (clears flag and spring), history(jj, scratch)
+//                            (pointer to the spring: in place or loaded into scratch),
+//                            keep_history(jj, xi) (stores it back if it was loaded)
+//   p.v(i, scratch), p.omega(i, scratch)   pointers to a grain's velocities
+//   p.coeffs(itype, jtype)   ContactCoeffs of the type pair
+//   p.step()                 ContactStep of this step
+//   p.owns(j), p.share(j)    whether f_j is added here; this rank's share of the pair's energy
+//   p.force_on(i)            an accumulator for grain i: add(c, frictional), finish()
+//   p.add_reaction(j, c, frictional)       −f and −ℓ_j tor on j
+//   p.overlap_limit(), p.broken(i, j, overlap)
+//   p.tracks_dissipation(), p.add_loss(sums, energy)
+//   p.tally(sums, i, j, c, k, xi, delx, dely, delz)   energy and virial of the pair
+#ifndef PW_CONTACT_SWEEP_H
+#define PW_CONTACT_SWEEP_H
+
+#include "contact/linear_coulomb.h"
+
+namespace porewater {
+
+template <class P>
+PW_INLINE void linear_coulomb_sweep(const P &p, const int i, typename P::Sums &sums)
+{
+  const double xtmp = p.x(i, 0), ytmp = p.x(i, 1), ztmp = p.x(i, 2);
+  const double radi = p.radius(i);
+  const int itype = p.type(i);
+  const auto row = p.neighbors(i);
+  auto force_i = p.force_on(i);
+  const ContactStep step = p.step();
+  const int jnum = row.count();
+
+  for (int jj = 0; jj < jnum; jj++) {
+    const int j = row.neighbor(jj);
+    const double delx = xtmp - p.x(j, 0);
+    const double dely = ytmp - p.x(j, 1);
+    const double delz = ztmp - p.x(j, 2);
+    const double rsq = delx * delx + dely * dely + delz * delz;
+    const double radj = p.radius(j);
+    const double radsum = radi + radj;
+    double spring[3];
+
+    if (rsq >= radsum * radsum) {    // an open contact forgets its history
+      if (row.touched(jj)) {    // most stay apart: no stores (flag 0 means history 0)
+        if (p.tracks_dissipation())
+          p.add_loss(sums, p.share(j) *
+                         opening_loss(p.coeffs(itype, p.type(j)).kt, row.history(jj, spring)));
+        row.forget(jj);
+      }
+      continue;
+    }
+    row.touch(jj);
+    const ContactCoeffs k = p.coeffs(itype, p.type(j));
+    // velocities are read only for closed contacts (few of the neighbours in a granular flow)
+    double vi[3], vj[3], wi[3], wj[3];
+    const ContactPair pair{delx, dely, delz, rsq, radi, radj,
+                           p.v(i, vi), p.v(j, vj), p.omega(i, wi), p.omega(j, wj)};
+    double *xi = row.history(jj, spring);
+    const ContactForce c = linear_coulomb_contact(pair, k, step, xi);
+    if (contact_is_broken(c.overlap, radi, radj, p.overlap_limit())) p.broken(i, j, c.overlap);
+    row.keep_history(jj, xi);
+    if (p.tracks_dissipation()) p.add_loss(sums, p.share(j) * spring_loss(k.kt, c, xi));
+
+    force_i.add(c, k.frictional);
+    if (p.owns(j)) p.add_reaction(j, c, k.frictional);
+    p.tally(sums, i, j, c, k, xi, delx, dely, delz);
+  }
+  force_i.finish();
+}
+
+}    // namespace porewater
+
+#endif

@@ -1,0 +1,298 @@
+// Grain <-> grid coupling of fix darcy/pressure (doc/model.md §3), the one algorithm the
+// CPU fix, the KOKKOS fix (of every host) and the tests run: what one grain deposits on the
+// grid and the fluid force it feels. Device-safe like grid.h.
+//
+// Deposits are summed per stencil block and corner (contiguous adds, no per-corner cell
+// index) and folded into the cells once per fluid step; the force is interpolated from a
+// per-block table of the corner gradients. A grain whose stencil lies further outside the
+// grid in z than any block reaches deposits into, and reads from, the cells directly.
+#ifndef PW_DARCY_COUPLING_H
+#define PW_DARCY_COUPLING_H
+
+#include "darcy/grid.h"
+
+namespace porewater {
+
+PW_INLINE double sphere_volume(double radius)
+{
+  return 4.0 / 3.0 * 3.14159265358979323846 * radius * radius * radius;
+}
+
+// The cell deposits of one fluid step in one array, so that one reduction sums them over
+// ranks: [solid volume at x (n) | solid momentum at x (3n, xyz interleaved) | solid volume
+// at the predicted position x + v*interval (n) | number of grains skipped as non-finite
+// (1)], n = number of cells.
+struct DepositLayout {
+  int ncells;
+  PW_INLINE int size() const { return 5 * ncells + 1; }
+  PW_INLINE int volume(int cell) const { return cell; }
+  PW_INLINE int momentum(int cell) const { return ncells + 3 * cell; }
+  PW_INLINE int predicted_volume(int cell) const { return 4 * ncells + cell; }
+  PW_INLINE int nonfinite() const { return 5 * ncells; }
+};
+
+// x - x is NaN for inf and NaN: a grain with a non-finite position or velocity
+PW_INLINE bool grain_is_finite(double x0, double x1, double x2, double v0, double v1, double v2)
+{
+  const double sum = x0 + x1 + x2 + v0 + v1 + v2;
+  return sum - sum == 0.0;
+}
+
+// The quantities a grain deposits at each stencil corner: 0 volume, 1-3 momentum x, y, z
+// (all at x), 4 volume at the predicted position.
+enum { DEPOSITS_PER_CORNER = 5, CORNERS = 8 };
+
+// What one grain of volume V and velocity v deposits with weights w at x and weights wp at
+// the predicted position: s*V and s*V*v at x, s*V at x + v*interval, per stencil corner c.
+// add(c, q, value) accumulates quantity q of corner c.
+template <class Add>
+PW_INLINE void deposit_corners(const double w[8], const double wp[8], double volume,
+                               double v0, double v1, double v2, const Add &add)
+{
+  double sv[8];    // quantity by quantity over the corners: contiguous runs of 8 to vectorise
+  for (int c = 0; c < 8; ++c) sv[c] = w[c] * volume;
+  for (int c = 0; c < 8; ++c) add(c, 0, sv[c]);
+  for (int c = 0; c < 8; ++c) add(c, 1, sv[c] * v0);
+  for (int c = 0; c < 8; ++c) add(c, 2, sv[c] * v1);
+  for (int c = 0; c < 8; ++c) add(c, 3, sv[c] * v2);
+  for (int c = 0; c < 8; ++c) add(c, 4, wp[c] * volume);
+}
+
+// Deposit one grain straight into the cells of its stencils (DepositLayout slots).
+template <class Add>
+PW_INLINE void deposit_grain_in_cells(const GridGeom &g, const DepositLayout &layout, double x0,
+                                      double x1, double x2, double v0, double v1, double v2,
+                                      double volume, double interval, const Add &add)
+{
+  int idx[8], pidx[8];
+  double w[8], pw[8];
+  stencil(g, x0, x1, x2, idx, w);
+  stencil(g, x0 + v0 * interval, x1 + v1 * interval, x2 + v2 * interval, pidx, pw);
+  deposit_corners(w, pw, volume, v0, v1, v2, [&](int c, int q, double value) {
+    if (q == 0) add(layout.volume(idx[c]), value);
+    else if (q < 4) add(layout.momentum(idx[c]) + q - 1, value);
+    else add(layout.predicted_volume(pidx[c]), value);
+  });
+}
+
+// The lattice cells ("blocks") of 2x2x2 cell centres that stencils span. Block (i0, j0, k0):
+// i0, j0 wrapped periodically, k0 in [-1, nz-1], which holds every point less than half a
+// cell below or above the grid.
+struct StencilBlocks {
+  int nx, ny, nz;
+  PW_INLINE int count() const { return nx * ny * (nz + 1); }
+  // the block of a stencil base, -1 if it lies further outside the grid in z
+  PW_INLINE int block(const StencilBase &b) const
+  {
+    if (b.k0 < -1 || b.k0 >= nz) return -1;
+    return wrap_index(b.i0, nx) + nx * (wrap_index(b.j0, ny) + ny * (b.k0 + 1));
+  }
+  // a base of that block (fractions 0), for corner_cells
+  PW_INLINE StencilBase base(int block) const
+  {
+    return StencilBase{block % nx, (block / nx) % ny, block / (nx * ny) - 1, 0.0, 0.0, 0.0};
+  }
+};
+
+// The coupling's view of the grid, and where one rank's grains deposit:
+// [per block: quantity q (DEPOSITS_PER_CORNER) x corner c (8) | the cells (DepositLayout)].
+struct CouplingGrid {
+  GridGeom geom;
+  LatticeMap map;
+  StencilBlocks blocks;
+  DepositLayout cells;
+  static constexpr int BLOCK_DEPOSITS = DEPOSITS_PER_CORNER * CORNERS;
+  static constexpr int BLOCK_GRADIENT = 4 * CORNERS;    // 3 components and a pad per corner
+  PW_INLINE int block_sums() const { return BLOCK_DEPOSITS * blocks.count(); }
+  PW_INLINE int cell_sums() const { return block_sums(); }    // offset of the cell deposits
+  PW_INLINE int sums_size() const { return block_sums() + cells.size(); }
+  PW_INLINE int gradient_table_size() const { return BLOCK_GRADIENT * blocks.count(); }
+};
+
+PW_INLINE CouplingGrid coupling_grid(const GridGeom &g)
+{
+  return CouplingGrid{g, lattice_map(g), StencilBlocks{g.nx, g.ny, g.nz},
+                      DepositLayout{cell_count(g)}};
+}
+
+// One grain's deposit into `sums` (CouplingGrid layout; add(slot, value) accumulates: a
+// plain += on the CPU, a scatter or atomic add in a KOKKOS kernel). Returns the grain's
+// block at x, its corner weights there in w, for the force of the same step; -1 when it
+// deposited into the cells directly (or nothing: a non-finite grain, counted instead).
+template <class Add>
+PW_INLINE int deposit_grain(const CouplingGrid &cg, double x0, double x1, double x2, double v0,
+                            double v1, double v2, double volume, double interval, double w[8],
+                            const Add &add)
+{
+  if (!grain_is_finite(x0, x1, x2, v0, v1, v2)) {
+    add(cg.cell_sums() + cg.cells.nonfinite(), 1.0);
+    return -1;
+  }
+  const StencilBase at = stencil_base(cg.map, x0, x1, x2);
+  const StencilBase ahead =
+      stencil_base(cg.map, x0 + v0 * interval, x1 + v1 * interval, x2 + v2 * interval);
+  const int block = cg.blocks.block(at), block_ahead = cg.blocks.block(ahead);
+  if (block < 0 || block_ahead < 0) {
+    const int cells = cg.cell_sums();
+    deposit_grain_in_cells(cg.geom, cg.cells, x0, x1, x2, v0, v1, v2, volume, interval,
+                           [&](int slot, double value) { add(cells + slot, value); });
+    return -1;
+  }
+  double w_ahead[8];
+  corner_weights(at, w);
+  corner_weights(ahead, w_ahead);
+  const int sum_at = CouplingGrid::BLOCK_DEPOSITS * block;
+  const int sum_ahead = CouplingGrid::BLOCK_DEPOSITS * block_ahead;
+  deposit_corners(w, w_ahead, volume, v0, v1, v2, [&](int c, int q, double value) {
+    add((q < 4 ? sum_at : sum_ahead) + CORNERS * q + c, value);
+  });
+  return block;
+}
+
+// The block of a grain at x and its corner weights there (-1: outside every block).
+PW_INLINE int grain_stencil(const CouplingGrid &cg, double x0, double x1, double x2, double w[8])
+{
+  const StencilBase at = stencil_base(cg.map, x0, x1, x2);
+  corner_weights(at, w);
+  return cg.blocks.block(at);
+}
+
+// Add the per-block sums into the cell deposits: sums in CouplingGrid layout.
+inline void fold_block_deposits(const CouplingGrid &cg, double *sums)
+{
+  double *cells = sums + cg.cell_sums();
+  for (int block = 0; block < cg.blocks.count(); ++block) {
+    const double *from = sums + CouplingGrid::BLOCK_DEPOSITS * block;
+    int idx[8];
+    corner_cells(cg.geom, cg.blocks.base(block), idx);
+    for (int c = 0; c < CORNERS; ++c) {
+      cells[cg.cells.volume(idx[c])] += from[c];
+      for (int d = 0; d < 3; ++d)
+        cells[cg.cells.momentum(idx[c]) + d] += from[CORNERS * (1 + d) + c];
+      cells[cg.cells.predicted_volume(idx[c])] += from[CORNERS * 4 + c];
+    }
+  }
+}
+
+// The 3 components of a cell-centre vector field (interleaved xyz) at the 8 cells idx,
+// corner-major and padded to 4 (so that the components are summed side by side):
+// out[4*c + d], out[4*c + 3] = 0.
+PW_INLINE void corner_vectors(const double *field, const int idx[8], double out[32])
+{
+  for (int c = 0; c < 8; ++c) {
+    for (int d = 0; d < 3; ++d) out[4 * c + d] = field[3 * idx[c] + d];
+    out[4 * c + 3] = 0.0;
+  }
+}
+
+// The table of corner gradients per block (BLOCK_GRADIENT values a block) from the
+// cell-centre pressure gradient, once per fluid step.
+inline void fill_gradient_table(const CouplingGrid &cg, const double *gradient, double *table)
+{
+  for (int block = 0; block < cg.blocks.count(); ++block) {
+    int idx[8];
+    corner_cells(cg.geom, cg.blocks.base(block), idx);
+    corner_vectors(gradient, idx, table + CouplingGrid::BLOCK_GRADIENT * block);
+  }
+}
+
+// Fluid force f = -V (grad p + rho_f g) on a grain of volume V: grad p interpolated with
+// the stencil weights w from the gradients at the 8 stencil cells (corner_vectors); the
+// second term is buoyancy (rho_g = rho_f g).
+PW_INLINE void fluid_force_from_corners(const double corner_gradient[32], const double rho_g[3],
+                                        const double w[8], double volume, double f[3])
+{
+  double sum[4] = {0.0, 0.0, 0.0, 0.0};
+  for (int c = 0; c < 8; ++c)
+    for (int d = 0; d < 4; ++d) sum[d] += w[c] * corner_gradient[4 * c + d];
+  for (int d = 0; d < 3; ++d) f[d] = -volume * (sum[d] + rho_g[d]);
+}
+
+// The same for a grain at x, from the cell-centre gradients (interleaved xyz).
+PW_INLINE void fluid_force_from_cells(const GridGeom &g, const double *pressure_gradient,
+                                      const double rho_g[3], double x0, double x1, double x2,
+                                      double volume, double f[3])
+{
+  int idx[8];
+  double w[8], corner_gradient[32];
+  stencil(g, x0, x1, x2, idx, w);
+  corner_vectors(pressure_gradient, idx, corner_gradient);
+  fluid_force_from_corners(corner_gradient, rho_g, w, volume, f);
+}
+
+// What the force on the grains reads after a fluid step: the per-block corner gradients
+// and, for grains outside every block, the cell-centre gradients; rho_f g.
+struct FluidForceField {
+  const double *gradient_table;
+  const double *cell_gradient;
+  double rho_g[3];
+};
+
+// The fluid force on a grain at x with block `block` and weights w (grain_stencil or
+// deposit_grain of this step).
+PW_INLINE void grain_fluid_force(const CouplingGrid &cg, const FluidForceField &field,
+                                 const int block, const double w[8], double x0, double x1,
+                                 double x2, double volume, double f[3])
+{
+  if (block >= 0)
+    fluid_force_from_corners(field.gradient_table + CouplingGrid::BLOCK_GRADIENT * block,
+                             field.rho_g, w, volume, f);
+  else
+    fluid_force_from_cells(cg.geom, field.cell_gradient, field.rho_g, x0, x1, x2, volume, f);
+}
+
+// ---------------------------------------------------------------------------------------
+// The two per-grain kernels of the fix, over a grain accessor G (grains/host_grains.h), the
+// grains' stored stencils S (s.block(i) an int&, s.weights(i) 8 doubles) and their held
+// fluid forces H (h(i, d) a double&).
+
+// Grain i deposits (CouplingGrid layout) and keeps its stencil at x.
+template <class G, class S, class Add>
+PW_INLINE void deposit_grain(const CouplingGrid &cg, const G &g, const S &stencils,
+                             const int groupbit, const double interval, const int i, const Add &add)
+{
+  stencils.block(i) = -1;
+  if (!(g.mask(i) & groupbit)) return;
+  stencils.block(i) = deposit_grain(cg, g.x(i, 0), g.x(i, 1), g.x(i, 2), g.v(i, 0), g.v(i, 1),
+                                    g.v(i, 2), sphere_volume(g.radius(i)), interval,
+                                    stencils.weights(i), add);
+}
+
+// f += the fluid force on grain i, also held in h; from the stencil its deposit of this
+// step kept (stored) or from its position now. Zero outside the group.
+template <class G, class S, class H>
+PW_INLINE void apply_fluid_force(const CouplingGrid &cg, const FluidForceField &field,
+                                 const G &g, const S &stencils, const H &held, const int groupbit,
+                                 const bool stored, const int i)
+{
+  double f[3] = {0.0, 0.0, 0.0};
+  if (g.mask(i) & groupbit) {
+    const double x0 = g.x(i, 0), x1 = g.x(i, 1), x2 = g.x(i, 2);
+    double w[8];
+    const double *weights = w;
+    int block;
+    if (stored) {
+      block = stencils.block(i);
+      weights = stencils.weights(i);
+    } else {
+      block = grain_stencil(cg, x0, x1, x2, w);
+    }
+    grain_fluid_force(cg, field, block, weights, x0, x1, x2, sphere_volume(g.radius(i)), f);
+    g.f(i, 0) += f[0];
+    g.f(i, 1) += f[1];
+    g.f(i, 2) += f[2];
+  }
+  held(i, 0) = f[0];
+  held(i, 1) = f[1];
+  held(i, 2) = f[2];
+}
+
+// f += the fluid force held for grain i (`interpolate fluid` between fluid steps)
+template <class G, class H> PW_INLINE void add_held_fluid_force(const G &g, const H &held, const int i)
+{
+  for (int d = 0; d < 3; ++d) g.f(i, d) += held(i, d);
+}
+
+}    // namespace porewater
+
+#endif

@@ -1,0 +1,32 @@
+// The global restart state of a fix, as LAMMPS and LIGGGHTS keep it: one block of doubles
+// the fix writes and reads back. The block starts with a header (a package mark, the
+// style's code, its format version, the number of values that follow), so that reading a
+// state written by another style, another version of the format, or a different command
+// stops with a message that says what differs, instead of reading garbage.
+#ifndef PW_INPUT_RESTART_STATE_H
+#define PW_INPUT_RESTART_STATE_H
+
+#include <string>
+#include <vector>
+
+namespace porewater {
+
+enum class RestartStyle { WallStress = 1, ShearStress = 2, Ty3 = 3, Darcy = 4 };
+
+struct RestartFormat {
+  RestartStyle style;
+  int version;
+  const char *command;    // for messages, e.g. "fix darcy/pressure"
+};
+
+// the block to write: header + values
+std::vector<double> restart_block(const RestartFormat &format, const std::vector<double> &values);
+
+// the values of a block written by restart_block; an InputError unless the header matches
+// `format` and (when expected_count >= 0) holds exactly expected_count values
+std::vector<double> restart_values(const RestartFormat &format, const char *block,
+                                   long expected_count);
+
+}    // namespace porewater
+
+#endif

@@ -1,0 +1,80 @@
+// The command syntax of every style of the package: what each command accepts, with its
+// defaults written here once, read by the one KeywordReader. The doc pages in doc/ describe
+// the same keywords; the hosts hand these functions the tokens after the style name and
+// turn an InputError into their own error call.
+#ifndef PW_INPUT_SETTINGS_H
+#define PW_INPUT_SETTINGS_H
+
+#include "contact/linear_coulomb.h"
+#include "darcy/solver.h"
+#include "input/keywords.h"
+
+#include <string>
+
+namespace porewater {
+
+// pair_style linear/coulomb [lever contact|radius] [dissipation yes|no] [overlap_limit X]
+struct LinearCoulombSettings {
+  int lever = LEVER_CONTACT;
+  bool dissipation = false;     // accumulate the frictional dissipation (compute pair)
+  double overlap_limit = 0.5;   // a deeper contact, as a fraction of the smaller radius, stops the run
+};
+LinearCoulombSettings parse_linear_coulomb(KeywordReader &in);
+
+// pair_coeff I J kn kt mu (the tokens after I J)
+ContactCoeffs parse_linear_coulomb_coeffs(KeywordReader &in);
+
+// fix ID group wall/stress z Z0|auto stress S|v_name mass M kn KN [damping GAMMA]
+struct WallStressSettings {
+  double z = 0.0;
+  bool z_auto = false;          // put the wall on the highest grain at the first setup
+  NumberOrVariable stress;      // applied normal stress S(t)
+  double mass = 0.0;
+  double kn = 0.0;
+  double damping = 0.0;         // gamma of the grain-wall dashpot
+};
+WallStressSettings parse_wall_stress(KeywordReader &in);
+
+// fix ID group shear/stress tau T mass M
+struct ShearStressSettings {
+  double tau = 0.0;
+  double mass = 0.0;
+};
+ShearStressSettings parse_shear_stress(KeywordReader &in);
+
+// fix ID group nve/sphere/ty3 [corrector yes|no]
+struct Ty3Settings {
+  bool corrector = false;       // Adams-Moulton velocity correction (third order)
+};
+Ty3Settings parse_ty3(KeywordReader &in);
+
+// fix ID group darcy/pressure grid Nx Ny Nz viscosity MU compressibility BETA density RHO
+//   permeability KC [keywords]; see doc/fix_darcy_pressure.rst
+struct DarcySettings {
+  int grid[3] = {0, 0, 0};
+  double zhi = 0.0;                  // grid top; the host sets the default (its box top)
+  DarcyParams params;                // viscosity, compressibility, kc, clamp, kmax, tol...
+  double density = 0.0;              // rho_f
+  double gravity[3] = {0.0, 0.0, 0.0};
+  bool gravity_given = false;
+  NumberOrVariable top;              // Dirichlet top pressure (default 0), if top_dirichlet
+  bool top_dirichlet = true;         // false: top noflow, a closed box
+  NumberOrVariable z_top;            // where it sits (default: grid top)
+  bool z_top_given = false;
+  NumberOrVariable bottom;           // Dirichlet bottom pressure, if bottom_dirichlet
+  bool bottom_dirichlet = false;
+  double initial_pressure = 0.0;
+  int every = 1;                     // fluid step every this many grain steps
+  bool interpolate_every_step = true;  // false: grain forces held between fluid steps
+  int profile_every = 0;             // 0: no profile file
+  std::string profile_path;
+  int vtk_every = 0;                 // 0: no VTK files
+  std::string vtk_prefix;
+};
+// box_zlo: the host's box bottom, which the grid starts at; zhi defaults to the host's box
+// top and must lie above box_zlo
+DarcySettings parse_darcy(KeywordReader &in, double box_zlo, double box_zhi);
+
+}    // namespace porewater
+
+#endif

@@ -1,0 +1,72 @@
+// The grain accessor of the core's per-grain kernels (grains/host_grains.h) over the
+// KOKKOS atom views, and the loops that run those kernels as Kokkos kernels. Every /kk fix
+// of the package syncs, in the hook itself, exactly the atom data it reads and flags what
+// it writes (datamask_read/modify stay EMPTY_MASK, so LAMMPS' own syncs around the hook do
+// nothing): one sync policy.
+#ifndef PW_LAMMPS_KOKKOS_GRAINS_H
+#define PW_LAMMPS_KOKKOS_GRAINS_H
+
+#include "atom_kokkos.h"
+#include "kokkos_type.h"
+
+namespace porewater {
+
+template <class DeviceType> struct KokkosGrains {
+  typedef ::ArrayTypes<DeviceType> AT;
+  typename AT::t_x_array xs;
+  typename AT::t_v_array vs, omegas;
+  typename AT::t_f_array fs, torques;
+  typename AT::t_float_1d radii, rmasses;
+  typename AT::t_int_1d masks;
+  typename AT::t_imageint_1d images;
+
+  explicit KokkosGrains(LAMMPS_NS::AtomKokkos *atomKK) :
+      xs(atomKK->k_x.view<DeviceType>()), vs(atomKK->k_v.view<DeviceType>()),
+      omegas(atomKK->k_omega.view<DeviceType>()), fs(atomKK->k_f.view<DeviceType>()),
+      torques(atomKK->k_torque.view<DeviceType>()), radii(atomKK->k_radius.view<DeviceType>()),
+      rmasses(atomKK->k_rmass.view<DeviceType>()), masks(atomKK->k_mask.view<DeviceType>()),
+      images(atomKK->k_image.view<DeviceType>())
+  {
+  }
+
+  KOKKOS_INLINE_FUNCTION double &x(int i, int d) const { return xs(i, d); }
+  KOKKOS_INLINE_FUNCTION double &v(int i, int d) const { return vs(i, d); }
+  KOKKOS_INLINE_FUNCTION double &f(int i, int d) const { return fs(i, d); }
+  KOKKOS_INLINE_FUNCTION double &omega(int i, int d) const { return omegas(i, d); }
+  KOKKOS_INLINE_FUNCTION double &torque(int i, int d) const { return torques(i, d); }
+  KOKKOS_INLINE_FUNCTION double radius(int i) const { return radii(i); }
+  KOKKOS_INLINE_FUNCTION double rmass(int i) const { return rmasses(i); }
+  KOKKOS_INLINE_FUNCTION int mask(int i) const { return masks(i); }
+  KOKKOS_INLINE_FUNCTION LAMMPS_NS::imageint image(int i) const { return images(i); }
+};
+
+template <class Body> struct ForEachGrain {
+  Body body;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { body(i); }
+};
+
+template <class Body> struct SumOverGrains {
+  typedef double value_type[];
+  const unsigned value_count = Body::count;
+  Body body;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, value_type sums) const { body(i, sums); }
+};
+
+// body(i) for the grains [0, n) as a kernel in DeviceType's execution space
+template <class DeviceType, class Body> void kokkos_for_each_grain(int n, const Body &body)
+{
+  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, n), ForEachGrain<Body>{body});
+}
+
+// body(i, sums) for the grains [0, n), summing Body::count values into sums
+template <class DeviceType, class Body>
+void kokkos_sum_over_grains(int n, const Body &body, double *sums)
+{
+  for (int k = 0; k < Body::count; ++k) sums[k] = 0.0;
+  Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, n), SumOverGrains<Body>{Body::count, body},
+                          sums);
+}
+
+}    // namespace porewater
+
+#endif
