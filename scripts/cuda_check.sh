@@ -42,7 +42,7 @@ fi
 log "compiling the package's KOKKOS sources with nvcc_wrapper"
 if [ ! -f "$REPO/build-cuda/build.ninja" ]; then
   cmake -S "$REPO" -B "$REPO/build-cuda" -G Ninja -D CMAKE_BUILD_TYPE=Release \
-    -D CMAKE_CXX_COMPILER="$WRAPPER" -D CMAKE_CXX_COMPILER_LAUNCHER=ccache -D PW_CUDA_CHECK=ON \
+    -D CMAKE_CXX_COMPILER="$WRAPPER" -D CMAKE_CXX_COMPILER_LAUNCHER=ccache -D PW_CUDA_CHECK=ON -D PW_TESTS=OFF \
     -D LAMMPS_SOURCE_DIR="$LAMMPS_SRC/src" -D LAMMPS_BUILD_DIR="$LAMMPS_CUDA_BUILD" >/dev/null
 fi
 cmake --build "$REPO/build-cuda" -j "${PW_JOBS:-$(nproc)}"
