@@ -55,7 +55,7 @@ def count(plugin_dir, script, accel, pattern, workdir):
                           text=True, check=True).stdout
     total = 0
     for line in text.splitlines():
-        m = re.match(r"\s*([\d,]+)\s+\(.*?\)\s+\S*:(.*)", line) or re.match(r"\s*([\d,]+)\s+\S*:(.*)", line)
+        m = re.match(r"\s*([\d,]+)\s+(?:\([^)]*\)\s+)?[^:\s]*:(.*)", line)
         if m and re.search(pattern, m.group(2)):
             total = max(total, int(m.group(1).replace(",", "")))
     return total

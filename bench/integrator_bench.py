@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Grain integrators: error against cost, energy drift, and the stability map (issue 6).
+"""Grain integrators: error against cost, energy drift, and the stability map.
 
 Compares LAMMPS' fix nve/sphere (velocity Verlet), fix nve/sphere/ty3 (sphere's Taylor step)
 and fix nve/sphere/ty3 corrector yes, with pair linear/coulomb (no damping), over

@@ -127,7 +127,7 @@ TEST(PairLinearCoulomb, ObliqueImpactRespectsCoulombAndSpinsBothGrainsTheSameWay
   ASSERT_GT(contact_steps, 100);
   EXPECT_LE(worst_ratio, 1.0 + 1e-12);    // |f_t| ≤ μ|f_n| up to round-off
   EXPECT_GT(worst_ratio, 0.99);            // and the contact did slide
-  // i (upper left, moving +x) brushes over j: both spin about +y (MODEL.md §1 signs)
+  // i (upper left, moving +x) brushes over j: both spin about +y (doc/model.md §1 signs)
   EXPECT_GT(l.of_tag(l.atom()->omega, 1)[1], 0.0);
   EXPECT_GT(l.of_tag(l.atom()->omega, 2)[1], 0.0);
   EXPECT_LT(total_kinetic(l), e0 * (1.0 - 1e-3));    // sliding took energy out

@@ -1,5 +1,5 @@
 // The inline physics of fix wall/stress, shear/stress and nve/sphere/ty3 on their own
-// (MODEL.md §2 and §4), without LAMMPS.
+// (doc/model.md §2 and §4), without LAMMPS.
 #include "walls/shear_plate.h"
 #include "integrate/taylor3.h"
 #include "walls/wall_contact.h"

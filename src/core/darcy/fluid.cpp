@@ -24,12 +24,6 @@ std::string number(double v, int digits = 6)
   return text;
 }
 
-double physical_memory()
-{
-  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && page > 0 ? (double) pages * (double) page : 0.0;
-}
-
 // a grid whose index arithmetic overflows an int, or that the machine cannot hold, stops
 // before anything is allocated
 void check_grid_fits(const DarcySettings &s)
@@ -44,7 +38,7 @@ void check_grid_fits(const DarcySettings &s)
                      " cells; its deposits would need " + number(largest_index) +
                      " array slots, more than an int indexes (" + std::to_string(INT_MAX) + ")");
   const GridGeom geom{0, 0, 0, 1, 1, 1, s.grid[0], s.grid[1], s.grid[2]};
-  const double bytes = DarcyFluid::bytes_for(geom), memory = physical_memory();
+  const double bytes = DarcyFluid::bytes_for(geom), memory = DarcyFluid::machine_memory();
   if (memory > 0.0 && bytes > memory)
     throw InputError("Illegal fix darcy/pressure command: grid " + grid + " has " + number(cells) +
                      " cells and needs " + number(bytes) + " bytes, more than this machine's " +
@@ -73,6 +67,12 @@ DarcyFluid::DarcyFluid(const DarcySettings &settings, const GridGeom &geom, cons
 DarcyFluid::~DarcyFluid()
 {
   if (profile_) std::fclose(profile_);
+}
+
+double DarcyFluid::machine_memory()
+{
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? (double) pages * (double) page : 0.0;
 }
 
 double DarcyFluid::bytes_for(const GridGeom &geom)

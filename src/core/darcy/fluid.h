@@ -88,6 +88,7 @@ class DarcyFluid {
   // what a fluid of this grid holds, in bytes (solver, deposits, gradient table)
   static double bytes_for(const GridGeom &geom);
   double bytes() const;
+  static double machine_memory();    // physical memory in bytes, 0 if unknown
 
   const DarcySettings &settings() const { return settings_; }
   const CouplingGrid &grid() const { return grid_; }
