@@ -126,10 +126,8 @@ void FixDarcyPressure::post_force(int /*vflag*/)
 porewater::GrainBackend &FixDarcyPressure::grains()
 {
   if (atom->nmax > maxatom) grow_fluid_force(atom->nmax);
-  cpu_grains.bind(porewater::HostGrains<imageint>{atom->x, atom->v, atom->f, atom->omega,
-                                                  atom->torque, atom->radius, atom->rmass,
-                                                  atom->mask, atom->image},
-                  atom->nlocal, groupbit, fluid_force);
+  cpu_grains.bind(porewater::CouplingArrays{atom->x, atom->v, atom->f, atom->radius, atom->mask,
+                                            atom->nlocal, groupbit, fluid_force});
   return cpu_grains;
 }
 

@@ -58,7 +58,7 @@ class FixDarcyPressure : public Fix, protected porewater::FluidHost {
 
  private:
   porewater::GrainStep now() const;
-  porewater::SerialGrains<imageint> cpu_grains;
+  porewater::SerialGrains cpu_grains;
 };
 
 }    // namespace LAMMPS_NS

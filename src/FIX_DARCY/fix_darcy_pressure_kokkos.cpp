@@ -52,6 +52,18 @@ template <class DeviceType> struct Held {
   KOKKOS_INLINE_FUNCTION double &operator()(int i, int d) const { return rows(i, d); }
 };
 
+// the `add` of porewater::deposit_grain over a ScatterView access
+template <class Access> struct ScatterAdd {
+  const Access &sums;    // a ScatterAccess is not copyable
+  struct Row {
+    const Access &sums;
+    int offset;
+    KOKKOS_INLINE_FUNCTION void operator()(int k, double value) const { sums(offset + k) += value; }
+  };
+  KOKKOS_INLINE_FUNCTION void operator()(int slot, double value) const { sums(slot) += value; }
+  KOKKOS_INLINE_FUNCTION Row row(int offset) const { return Row{sums, offset}; }
+};
+
 template <class DeviceType> struct DepositKernel {
   porewater::CouplingGrid grid;
   porewater::KokkosGrains<DeviceType> grains;
@@ -63,7 +75,7 @@ template <class DeviceType> struct DepositKernel {
   {
     const auto access = sums.template access<DepositContribution<DeviceType>>();
     porewater::deposit_grain(grid, grains, stencils, groupbit, interval, i,
-                             [&](int slot, double value) { access(slot) += value; });
+                             ScatterAdd<decltype(access)>{access});
   }
 };
 

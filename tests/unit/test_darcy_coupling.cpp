@@ -60,7 +60,7 @@ TEST(DarcyGrains, NonFiniteGrainIsCountedNotDeposited)
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> slots(cg.sums_size(), 0.0);
-  auto add = [&slots](int slot, double value) { slots[slot] += value; };
+  const AddTo add{slots.data()};
   double w[8];
   EXPECT_EQ(deposit_grain(cg, nan, 1.2, 0.3, 0.0, 0.0, 0.0, 1e-3, 0.1, w, add), -1);
   EXPECT_EQ(deposit_grain(cg, 0.0, 1.2, 0.3, 0.0, 0.0, -inf, 1e-3, 0.1, w, add), -1);
@@ -115,7 +115,7 @@ TEST(DarcyGrains, BlockOfAStencilHasTheSameCellsAndFoldsToTheSameDeposits)
   const DepositLayout &layout = cg.cells;
   std::vector<double> direct(layout.size(), 0.0), sums(cg.sums_size(), 0.0);
   auto add_direct = [&direct](int slot, double value) { direct[slot] += value; };
-  auto add = [&sums](int slot, double value) { sums[slot] += value; };
+  const AddTo add{sums.data()};
   const double volume = 1e-4, v[3] = {0.3, -0.2, 0.5}, interval = 0.05;
   int points = 0, in_blocks = 0;
   for (double x = -0.35; x < 0.25; x += 0.037)

@@ -28,7 +28,7 @@
 namespace porewater {
 
 template <class P>
-PW_INLINE void linear_coulomb_sweep(const P &p, const int i, typename P::Sums &sums)
+PW_FORCEINLINE void linear_coulomb_sweep(const P &p, const int i, typename P::Sums &sums)
 {
   const double xtmp = p.x(i, 0), ytmp = p.x(i, 1), ztmp = p.x(i, 2);
   const double radi = p.radius(i);

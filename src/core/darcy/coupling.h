@@ -43,19 +43,20 @@ PW_INLINE bool grain_is_finite(double x0, double x1, double x2, double v0, doubl
 enum { DEPOSITS_PER_CORNER = 5, CORNERS = 8 };
 
 // What one grain of volume V and velocity v deposits with weights w at x and weights wp at
-// the predicted position: s*V and s*V*v at x, s*V at x + v*interval, per stencil corner c.
-// add(c, q, value) accumulates quantity q of corner c.
-template <class Add>
+// the predicted position, per stencil corner c: out[8q + c] is quantity q of corner c
+// (0: s*V, 1-3: s*V*v_x, v_y, v_z, all at x; 4: s*V at x + v*interval). Computed apart from
+// the adds, so that the adds of a block run over contiguous slots (vectorised on the CPU).
 PW_INLINE void deposit_corners(const double w[8], const double wp[8], double volume,
-                               double v0, double v1, double v2, const Add &add)
+                               double v0, double v1, double v2, double out[40])
 {
-  double sv[8];    // quantity by quantity over the corners: contiguous runs of 8 to vectorise
-  for (int c = 0; c < 8; ++c) sv[c] = w[c] * volume;
-  for (int c = 0; c < 8; ++c) add(c, 0, sv[c]);
-  for (int c = 0; c < 8; ++c) add(c, 1, sv[c] * v0);
-  for (int c = 0; c < 8; ++c) add(c, 2, sv[c] * v1);
-  for (int c = 0; c < 8; ++c) add(c, 3, sv[c] * v2);
-  for (int c = 0; c < 8; ++c) add(c, 4, wp[c] * volume);
+  for (int c = 0; c < 8; ++c) {
+    const double sv = w[c] * volume;
+    out[c] = sv;
+    out[8 + c] = sv * v0;
+    out[16 + c] = sv * v1;
+    out[24 + c] = sv * v2;
+    out[32 + c] = wp[c] * volume;
+  }
 }
 
 // Deposit one grain straight into the cells of its stencils (DepositLayout slots).
@@ -68,11 +69,12 @@ PW_INLINE void deposit_grain_in_cells(const GridGeom &g, const DepositLayout &la
   double w[8], pw[8];
   stencil(g, x0, x1, x2, idx, w);
   stencil(g, x0 + v0 * interval, x1 + v1 * interval, x2 + v2 * interval, pidx, pw);
-  deposit_corners(w, pw, volume, v0, v1, v2, [&](int c, int q, double value) {
-    if (q == 0) add(layout.volume(idx[c]), value);
-    else if (q < 4) add(layout.momentum(idx[c]) + q - 1, value);
-    else add(layout.predicted_volume(pidx[c]), value);
-  });
+  double d[DEPOSITS_PER_CORNER * CORNERS];
+  deposit_corners(w, pw, volume, v0, v1, v2, d);
+  for (int c = 0; c < CORNERS; ++c) add(layout.volume(idx[c]), d[c]);
+  for (int q = 1; q < 4; ++q)
+    for (int c = 0; c < CORNERS; ++c) add(layout.momentum(idx[c]) + q - 1, d[CORNERS * q + c]);
+  for (int c = 0; c < CORNERS; ++c) add(layout.predicted_volume(pidx[c]), d[CORNERS * 4 + c]);
 }
 
 // The lattice cells ("blocks") of 2x2x2 cell centres that stencils span. Block (i0, j0, k0):
@@ -115,10 +117,12 @@ PW_INLINE CouplingGrid coupling_grid(const GridGeom &g)
                       DepositLayout{cell_count(g)}};
 }
 
-// One grain's deposit into `sums` (CouplingGrid layout; add(slot, value) accumulates: a
-// plain += on the CPU, a scatter or atomic add in a KOKKOS kernel). Returns the grain's
-// block at x, its corner weights there in w, for the force of the same step; -1 when it
-// deposited into the cells directly (or nothing: a non-finite grain, counted instead).
+// One grain's deposit into the sums of a CouplingGrid layout, through `add`: add(slot,
+// value) accumulates one slot, add.row(offset) gives a row r with r(k, value) accumulating
+// slot offset + k (a plain += on the CPU, where the compiler then adds a block's corners
+// side by side; a scatter or atomic add in a KOKKOS kernel). Returns the grain's block at
+// x, its corner weights there in w, for the force of the same step; -1 when it deposited
+// into the cells directly (or nothing: a non-finite grain, counted instead).
 template <class Add>
 PW_INLINE int deposit_grain(const CouplingGrid &cg, double x0, double x1, double x2, double v0,
                             double v1, double v2, double volume, double interval, double w[8],
@@ -141,13 +145,25 @@ PW_INLINE int deposit_grain(const CouplingGrid &cg, double x0, double x1, double
   double w_ahead[8];
   corner_weights(at, w);
   corner_weights(ahead, w_ahead);
-  const int sum_at = CouplingGrid::BLOCK_DEPOSITS * block;
-  const int sum_ahead = CouplingGrid::BLOCK_DEPOSITS * block_ahead;
-  deposit_corners(w, w_ahead, volume, v0, v1, v2, [&](int c, int q, double value) {
-    add((q < 4 ? sum_at : sum_ahead) + CORNERS * q + c, value);
-  });
+  double d[CouplingGrid::BLOCK_DEPOSITS];
+  deposit_corners(w, w_ahead, volume, v0, v1, v2, d);
+  const auto sum_at = add.row(CouplingGrid::BLOCK_DEPOSITS * block);
+  for (int k = 0; k < 4 * CORNERS; ++k) sum_at(k, d[k]);
+  const auto sum_ahead = add.row(CouplingGrid::BLOCK_DEPOSITS * block_ahead);
+  for (int k = 4 * CORNERS; k < CouplingGrid::BLOCK_DEPOSITS; ++k) sum_ahead(k, d[k]);
   return block;
 }
+
+// The `add` of deposit_grain over a plain array.
+struct AddTo {
+  double *sums;
+  struct Row {
+    double *base;
+    PW_INLINE void operator()(int k, double value) const { base[k] += value; }
+  };
+  PW_INLINE void operator()(int slot, double value) const { sums[slot] += value; }
+  PW_INLINE Row row(int offset) const { return Row{sums + offset}; }
+};
 
 // The block of a grain at x and its corner weights there (-1: outside every block).
 PW_INLINE int grain_stencil(const CouplingGrid &cg, double x0, double x1, double x2, double w[8])
