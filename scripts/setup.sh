@@ -6,15 +6,26 @@
 #   3. our own LAMMPS (GRANULAR, PLUGIN, KOKKOS OpenMP+Serial, MPI, shared), installed into
 #      the cache prefix
 #   4. the plugin (this repo) in ./build
+#   5. LIGGGHTS host (if selected): Debian's liggghts + libliggghts-dev, and our `liggghts`
+#      launcher in ./build-liggghts (LIGGGHTS itself is not rebuilt)
 # Re-running on a ready machine only re-runs the incremental builds (seconds).
 #
-# Environment: PW_CACHE (default ~/.cache/lammps-porewater), PW_JOBS (default nproc).
+# Environment: PW_HOSTS (host layers: "lammps" (default), "liggghts", "lammps liggghts"),
+#   PW_LIGGGHTS=1 (adds liggghts to PW_HOSTS), PW_CACHE (default ~/.cache/lammps-porewater),
+#   PW_JOBS (default nproc).
 set -euo pipefail
 
 REPO=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 # shellcheck source=scripts/versions.sh
 source "$REPO/scripts/versions.sh"
 JOBS=${PW_JOBS:-$(nproc)}
+HOSTS=" ${PW_HOSTS:-lammps} "
+HOSTS=${HOSTS//;/ }
+[ "${PW_LIGGGHTS:-0}" = 1 ] && HOSTS="$HOSTS liggghts "
+has_host() { [[ $HOSTS == *" $1 "* ]]; }
+for h in $HOSTS; do
+  case $h in none|lammps|liggghts) ;; *) echo "PW_HOSTS: unknown host '$h' (lammps, liggghts)" >&2; exit 1 ;; esac
+done
 
 log() { printf '[setup %s] %s\n' "$(date +%H:%M:%S)" "$*"; }
 SUDO=""
@@ -23,6 +34,8 @@ SUDO=""
 # ---- 1. system packages -------------------------------------------------------------
 APT_PACKAGES=(build-essential cmake ninja-build ccache pkg-config xz-utils dpkg-dev
   libopenmpi-dev openmpi-bin googletest libgtest-dev python3 python3-numpy python3-matplotlib)
+# LIGGGHTS-PUBLIC 3.8.0 (bookworm: 3.8.0+repack1-9+b2): the library, headers and stock binary
+has_host liggghts && APT_PACKAGES+=(liggghts libliggghts-dev)
 missing=()
 for p in "${APT_PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -42,6 +55,28 @@ fi
 if [ ${#missing[@]} -gt 0 ]; then
   log "installing: ${missing[*]}"
   $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+export CCACHE_DIR=${CCACHE_DIR:-$PW_CACHE/ccache}
+# paths relative to the clone, so a fresh clone elsewhere (CI) still hits the cache
+export CCACHE_BASEDIR=$REPO CCACHE_NOHASHDIR=1
+
+# ---- 5. the LIGGGHTS host (run after the plugin, or alone) ---------------------------------
+liggghts_host() {
+  log "LIGGGHTS: libliggghts-dev $(dpkg-query -W -f='${Version}' libliggghts-dev)"
+  if [ ! -f "$REPO/build-liggghts/build.ninja" ]; then
+    cmake -S "$REPO" -B "$REPO/build-liggghts" -G Ninja -D CMAKE_BUILD_TYPE=Release \
+      -D CMAKE_CXX_COMPILER_LAUNCHER=ccache -D PW_HOSTS=liggghts >/dev/null
+  fi
+  log "building the LIGGGHTS launcher (its tests: scripts/test.sh)"
+  cmake --build "$REPO/build-liggghts" -j "$JOBS" --target liggghts
+}
+if ! has_host lammps; then
+  if has_host liggghts; then
+    liggghts_host
+    log "done: source $REPO/scripts/env.sh, then liggghts -in <input>"
+  fi
+  exit 0
 fi
 
 # ---- 2. sources ------------------------------------------------------------------------
@@ -77,9 +112,6 @@ if [ "$(cat "$LAMMPS_SRC/.pw-stamp" 2>/dev/null)" != "$stamp" ]; then
 fi
 
 # ---- 3. LAMMPS -------------------------------------------------------------------------
-export CCACHE_DIR=${CCACHE_DIR:-$PW_CACHE/ccache}
-# paths relative to the clone, so a fresh clone elsewhere (CI) still hits the cache
-export CCACHE_BASEDIR=$REPO CCACHE_NOHASHDIR=1
 ccache --max-size=5G >/dev/null
 if [ ! -f "$LAMMPS_BUILD/build.ninja" ]; then
   log "configuring LAMMPS in $LAMMPS_BUILD"
@@ -107,4 +139,9 @@ if [ ! -f "$REPO/build/build.ninja" ]; then
 fi
 log "building the plugin"
 cmake --build "$REPO/build" -j "$JOBS"
-log "done: source $REPO/scripts/env.sh, then lmp -in <input>"
+if has_host liggghts; then
+  liggghts_host
+  log "done: source $REPO/scripts/env.sh, then lmp -in <input> or liggghts -in <input>"
+else
+  log "done: source $REPO/scripts/env.sh, then lmp -in <input>"
+fi
