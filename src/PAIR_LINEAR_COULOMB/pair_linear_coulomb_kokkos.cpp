@@ -49,6 +49,37 @@ struct PairTally {
   }
 };
 
+// Row i of a 2-D view as a pointer: element jj is base[jj * stride], with the stride 1 known
+// at compile time for LayoutRight (the host's), so that the sweep's walk along a row of the
+// neighbour list and of its history is pointer increments.
+template <class T, class Layout> struct ViewRow {
+  T *base;
+  size_t stride;
+  KOKKOS_INLINE_FUNCTION T &operator[](int jj) const { return base[jj * stride]; }
+};
+template <class T> struct ViewRow<T, Kokkos::LayoutRight> {
+  T *base;
+  KOKKOS_INLINE_FUNCTION T &operator[](int jj) const { return base[jj]; }
+};
+template <class View>
+KOKKOS_INLINE_FUNCTION ViewRow<typename View::value_type, typename View::array_layout>
+view_row(const View &v, int i, std::true_type /*LayoutRight*/)
+{
+  return {&v(i, 0)};
+}
+template <class View>
+KOKKOS_INLINE_FUNCTION ViewRow<typename View::value_type, typename View::array_layout>
+view_row(const View &v, int i, std::false_type)
+{
+  return {&v(i, 0), v.stride(1)};
+}
+template <class View>
+KOKKOS_INLINE_FUNCTION ViewRow<typename View::value_type, typename View::array_layout>
+view_row(const View &v, int i)
+{
+  return view_row(v, i, std::is_same<typename View::array_layout, Kokkos::LayoutRight>());
+}
+
 // The sweep over each grain's half list (newton off: pairs with a ghost j are computed on
 // both ranks). NEIGHFLAG HALF: one thread; HALFTHREAD: threads share j, whose forces go to
 // per-thread copies on OpenMP and atomically on GPUs.
@@ -95,25 +126,27 @@ template <class DeviceType, int NEIGHFLAG, int EVFLAG, int UPDATE_HISTORY> struc
     typedef PairTally Sums;
 
     struct Row {
-      const SweepKernel &k;
-      int i;
-      KOKKOS_INLINE_FUNCTION int count() const { return k.numneigh[i]; }
-      KOKKOS_INLINE_FUNCTION int neighbor(int jj) const { return k.neighbors(i, jj) & NEIGHMASK; }
-      KOKKOS_INLINE_FUNCTION int touched(int jj) const { return k.touch(i, jj); }
-      KOKKOS_INLINE_FUNCTION void touch(int jj) const { k.touch(i, jj) = 1; }
+      ViewRow<int, typename AT::t_neighbors_2d::array_layout> neighbors;
+      ViewRow<int, typename AT::t_int_2d::array_layout> flags;
+      ViewRow<double, typename AT::t_float_2d::array_layout> springs;
+      int jnum;
+      KOKKOS_INLINE_FUNCTION int count() const { return jnum; }
+      KOKKOS_INLINE_FUNCTION int neighbor(int jj) const { return neighbors[jj] & NEIGHMASK; }
+      KOKKOS_INLINE_FUNCTION int touched(int jj) const { return flags[jj]; }
+      KOKKOS_INLINE_FUNCTION void touch(int jj) const { flags[jj] = 1; }
       KOKKOS_INLINE_FUNCTION void forget(int jj) const
       {
-        k.touch(i, jj) = 0;
-        for (int d = 0; d < 3; d++) k.springs(i, 3 * jj + d) = 0.0;
+        flags[jj] = 0;
+        for (int d = 0; d < 3; d++) springs[3 * jj + d] = 0.0;
       }
       KOKKOS_INLINE_FUNCTION double *history(int jj, double *scratch) const
       {
-        for (int d = 0; d < 3; d++) scratch[d] = k.springs(i, 3 * jj + d);
+        for (int d = 0; d < 3; d++) scratch[d] = springs[3 * jj + d];
         return scratch;
       }
       KOKKOS_INLINE_FUNCTION void keep_history(int jj, const double *xi) const
       {
-        for (int d = 0; d < 3; d++) k.springs(i, 3 * jj + d) = xi[d];
+        for (int d = 0; d < 3; d++) springs[3 * jj + d] = xi[d];
       }
     };
     // scalars, not arrays: kept in registers; written once, if any contact closed
@@ -149,7 +182,11 @@ template <class DeviceType, int NEIGHFLAG, int EVFLAG, int UPDATE_HISTORY> struc
     KOKKOS_INLINE_FUNCTION double x(int i, int d) const { return k.x(i, d); }
     KOKKOS_INLINE_FUNCTION double radius(int i) const { return k.radius[i]; }
     KOKKOS_INLINE_FUNCTION int type(int i) const { return k.type[i]; }
-    KOKKOS_INLINE_FUNCTION Row neighbors(int i) const { return Row{k, i}; }
+    KOKKOS_INLINE_FUNCTION Row neighbors(int i) const
+    {
+      return Row{view_row(k.neighbors, i), view_row(k.touch, i), view_row(k.springs, i),
+                 k.numneigh[i]};
+    }
     KOKKOS_INLINE_FUNCTION const double *v(int i, double *scratch) const
     {
       for (int d = 0; d < 3; d++) scratch[d] = k.v(i, d);
