@@ -153,13 +153,6 @@ inline void expect_error(Lammps &l, const std::string &commands, const std::stri
   }
 }
 
-// "{}" in `fmt` replaced by `arg`
-inline std::string format(const std::string &fmt, const std::string &arg)
-{
-  std::string out = fmt;
-  return out.replace(out.find("{}"), 2, arg);
-}
-
 // Runs our lmp on `script` (the plugin loaded first) in a separate process, as users do.
 inline void run_lmp(const std::string &script, const std::string &args = "",
                     const std::string &name = "pwtest_subprocess")

@@ -78,15 +78,6 @@ TEST(FixDarcyInterpolate, ReneighboringEveryStepMakesTheModesIdentical)
   EXPECT_EQ(forces_by_step("fluid", every1, 20), forces_by_step("step", every1, 20));
 }
 
-TEST(FixDarcyInterpolate, BadValueNamesTheKeyword)
-{
-  Lammps l;
-  moving_grains(l, "step", "");
-  pwtest::expect_error(l, "fix bad all darcy/pressure grid 2 2 2 viscosity 1 compressibility 1 "
-                          "density 1 permeability 1 interpolate always",
-                       "interpolate expects step or fluid, got 'always'");
-}
-
 TEST(FixDarcyInterpolate, KokkosHoldsTheSameForcesAsTheCpuFix)
 {
   const std::string every7 = "neigh_modify every 7 delay 0 check no";
