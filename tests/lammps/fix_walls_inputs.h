@@ -2,17 +2,7 @@
 #ifndef PW_TEST_FIX_WALLS_INPUTS_H
 #define PW_TEST_FIX_WALLS_INPUTS_H
 
-#include "lammps_fixture.h"
-
-#include <gtest/gtest.h>
-
-#include <cmath>
-#include <cstdio>
-#include <fstream>
-#include <map>
-#include <stdexcept>
 #include <string>
-#include <vector>
 
 namespace pwtest {
 
@@ -46,61 +36,77 @@ inline std::string cubic_stack(int nx, int ny, int nz, double zhi, double kn = 1
       "group bottom region low\ngroup mobile subtract all bottom\n";
 }
 
-// `x` keyed by the lattice site each grain started on (from `x0`, centres at half-integers)
-// instead of by atom ID: create_atoms numbers the grains differently on different numbers
-// of ranks
-inline std::map<long, std::vector<double>> by_site(const std::map<long, std::vector<double>> &x0,
-                                                   const std::map<long, std::vector<double>> &x)
+// ---- fix wall/stress ------------------------------------------------------------------
+
+// an empty box 2 × 3 (area 6) from z = 0 to 10, periodic in x and y
+const std::string empty_box = "units lj\natom_style sphere\nboundary p p f\n"
+                              "region box block 0 2 0 3 0 10\ncreate_box 1 box\ntimestep 0.01\n";
+
+// The stack resting on its held bottom layer, damped, under wall w at `stress` (mass one
+// per column of grains, kn 1e4, damping 100).
+inline std::string wall_on_stack(const std::string &stress, int columns)
 {
-  std::map<long, std::vector<double>> out;
-  for (const auto &kv : x0) {
-    const auto &p = kv.second;
-    const long site =
-        std::lround(2 * p[0]) + 1000 * (std::lround(2 * p[1]) + 1000 * std::lround(2 * p[2]));
-    out[site] = x.at(kv.first);
-  }
-  return out;
+  return "fix hold bottom setforce 0 0 0\nfix integrate all nve/sphere\n"
+         "fix damp mobile viscous 20\n"
+         "fix w all wall/stress z auto stress " + stress + " mass " + std::to_string(columns) +
+      " kn 1e4 damping 100\n";
 }
 
-// Commands that write, at the end of a script run by pwtest::run_lmp, the values of
-// `expressions` (e.g. "f_w[1]") to `name`.values and all positions to `name`.dump.
-inline std::string save_results(const std::string &name,
-                                const std::vector<std::string> &expressions)
+// the 3 × 3 × 4 stack under the wall: S = 10 on 9 columns of 4 springs in series
+// (kn = 1e4) compresses each contact by S/kn = 1e-3
+const double STACK_STRESS = 10.0, STACK_KN = 1.0e4;
+inline std::string loaded_stack(const std::string &stress = "10")
 {
-  std::string print = "print \"";
-  for (const auto &e : expressions) print += "$(" + e + ":%.17g) ";
-  return print + "\" file " + name + ".values screen no\n" + "write_dump all custom " + name +
-      ".dump id x y z modify sort id format float %.17g\n";
+  return cubic_stack(3, 3, 4, 8.0, STACK_KN) + "timestep 5e-4\n" + wall_on_stack(stress, 9);
 }
 
-inline std::vector<double> read_values(const std::string &name)
+// a stress that keeps the loaded stack ringing: a moving wall in contact. Written with
+// step·dt: this LAMMPS version restarts `time` at 0 after read_restart
+const std::string oscillating_stress = "variable s equal 10.0+5.0*sin(2*PI*step*dt/0.3)\n";
+
+// ---- fix shear/stress -----------------------------------------------------------------
+
+// six grains 2 apart in one layer (no contacts) in a 6 × 4 box (area 24), moving in y and z
+// and spinning, integrated by `integrator`. τ = 0.5, M = 12 give the plate the acceleration
+// τ L_x L_y / M = 1.
+const double PLATE_ACCELERATION = 1.0;
+inline std::string free_layer(const std::string &integrator)
 {
-  std::ifstream in(name + ".values");
-  std::vector<double> out;
-  double v;
-  while (in >> v) out.push_back(v);
-  if (out.empty()) throw std::runtime_error("no values in " + name + ".values");
-  return out;
+  return "units lj\natom_style sphere\natom_modify map array\nboundary p p f\n"
+         "comm_modify vel yes\nlattice sc 0.125 origin 0.5 0.5 0.5\n"
+         "region box block 0 6 0 4 -4 8 units box\ncreate_box 1 box\n"
+         "region layer block 0 6 0 4 0 2 units box\ncreate_atoms 1 region layer\n" +
+      unit_grains +
+      "velocity all create 1.0 4321 loop geom\nvelocity all set 0 NULL NULL\n"
+      "set group all omega 0.3 -0.2 0.5\n"
+      "pair_style zero 1.0\npair_coeff * *\nneighbor 0.2 bin\ntimestep 0.001\n"
+      "fix integrate all " + integrator + "\n";
 }
 
-// the files run_lmp, save_results and write_restart left for `name`
-inline void remove_results(const std::string &name)
+// the wall that presses the plate of `nxy`² columns at σ = 10 (mass one per column)
+inline std::string plate_wall(int nxy)
 {
-  for (const char *ext : {".values", ".dump", ".restart"}) std::remove((name + ext).c_str());
-  std::remove(("in." + name).c_str());
-  std::remove(("log." + name).c_str());
+  return "fix w all wall/stress z auto stress 10 mass " + std::to_string(nxy * nxy) +
+      " kn 1e4 damping 100\n";
 }
 
-// A restart-split run (`split`) reproduces the unsplit one (`whole`) bit for bit: every
-// saved value and every position, as printed with 17 digits. Removes both runs' files.
-inline void expect_identical_results(const std::string &whole, const std::string &split,
-                                     const std::string &tag)
+// Two layers of an nxy × nxy cubic stack with friction μ = 0.5: the bottom one fixed (not
+// integrated), the top one (`mobile`) pressed on it by the wall until settled (2000 steps).
+// Each column's contact then holds at most μσ = 5 per unit area; A/M = 1.
+inline std::string pressed_layer(int nxy)
 {
-  EXPECT_EQ(read_values(split), read_values(whole)) << tag;
-  EXPECT_EQ(max_abs_diff(read_dump(whole + ".dump"), read_dump(split + ".dump")), 0.0) << tag;
-  remove_results(whole);
-  remove_results(split);
+  return cubic_stack(nxy, nxy, 2, 5.0) +
+      "pair_coeff * * 1e4 1e4 0.5\ntimestep 5e-4\nfix integrate mobile nve/sphere\n" +
+      plate_wall(nxy) + "run 2000\n";
 }
+
+// the pressed layer sheared as the plate at τ
+inline std::string shear_plate(double tau, int nxy)
+{
+  return "fix s mobile shear/stress tau " + std::to_string(tau) + " mass " +
+      std::to_string(nxy * nxy) + "\n";
+}
+inline std::string sheared_stack(double tau) { return pressed_layer(3) + shear_plate(tau, 3); }
 
 }    // namespace pwtest
 

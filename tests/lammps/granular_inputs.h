@@ -19,11 +19,13 @@ inline std::string dense_gas_settings()
          "thermo_modify norm no\n";
 }
 
-// A periodic box of `nside`^3 grains of diameter 1 on a jittered lattice (spacing 1.05),
-// random velocities, no gravity: a dense granular gas with many collisions per 100 steps.
+// A periodic box of `nside`^3 grains of diameter 1 on a jittered lattice (spacing 1.05,
+// jitter 0.02), random velocities, no gravity: a dense granular gas with many collisions
+// per 100 steps.
+const double dense_gas_spacing = 1.05;
 inline std::string dense_gas(int nside = 8, int seed = 12345)
 {
-  const double len = 1.05 * nside;
+  const double len = dense_gas_spacing * nside;
   return "units lj\n"
          "atom_style sphere\n"
          "atom_modify map array\n"
@@ -38,6 +40,29 @@ inline std::string dense_gas(int nside = 8, int seed = 12345)
          "displace_atoms all random 0.02 0.02 0.02 " + std::to_string(seed) + " units box\n"
          "velocity all create 2.0 " + std::to_string(seed + 1) + " loop geom\n"
          "timestep 0.0005\n" + dense_gas_settings();
+}
+
+// The dense gas of 6^3 grains with friction: pair linear/coulomb kn = kt = 2000, μ = 0.5.
+inline std::string frictional_gas()
+{
+  return dense_gas(6) + "pair_style linear/coulomb\npair_coeff * * 2000.0 2000.0 0.5\n";
+}
+
+// LAMMPS' bench/data.chute cut to 3044 grains (x < 19, y < 4 of a 20 × 5 box, so that no
+// grain overlaps across the new periodic seams), damping off: a dense flow under gravity on
+// a frozen base, integrated by nve/sphere. Everything but the pair style.
+inline std::string chute()
+{
+  return "units lj\natom_style sphere\nboundary p p fs\nnewton off\ncomm_modify vel yes\n"
+         "read_data " PW_LAMMPS_BENCH "/data.chute\n"
+         "region keep block 0 19 0 4 INF INF units box side out\n"
+         "delete_atoms region keep\n"
+         "change_box all x final 0 20 y final 0 5 units box\n"
+         "reset_atom_ids\n"
+         "neighbor 0.1 bin\nneigh_modify every 1 delay 0\ntimestep 0.0001\n"
+         "group bottom type 2\ngroup active subtract all bottom\n"
+         "neigh_modify exclude group bottom bottom\n"
+         "fix 1 all gravity 1.0 chute 26.0\nfix 2 bottom freeze\nfix 3 active nve/sphere\n";
 }
 
 }    // namespace pwtest

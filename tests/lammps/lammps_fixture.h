@@ -5,6 +5,8 @@
 
 #include "atom.h"
 #include "domain.h"
+#include "fix.h"
+#include "force.h"
 #include "input.h"
 #include "lammps.h"
 #include "library.h"
@@ -83,31 +85,59 @@ class Lammps {
     return x;
   }
 
-  // per-atom vector of all atoms by tag (gathered over ranks), e.g. "x", "v", "omega"
-  std::map<long, std::vector<double>> gather3(const char *name)
+  // per-atom 3-vector of all atoms by tag (gathered over ranks): an atom property ("x",
+  // "v", "omega") or a fix's or compute's per-atom array of 3 columns ("f_fl", "c_id")
+  std::map<long, std::vector<double>> gather3(const std::string &name)
   {
     const long natoms = (long) lmp->atom->natoms;
     std::vector<double> data(3 * natoms);
-    lammps_gather_atoms(lmp, const_cast<char *>(name), 1, 3, data.data());
+    char *cname = const_cast<char *>(name.c_str());
+    if (name.compare(0, 2, "f_") == 0 || name.compare(0, 2, "c_") == 0)
+      lammps_gather(lmp, cname, 1, 3, data.data());
+    else
+      lammps_gather_atoms(lmp, cname, 1, 3, data.data());
     std::map<long, std::vector<double>> out;
     for (long i = 0; i < natoms; i++)
       out[i + 1] = {data[3 * i], data[3 * i + 1], data[3 * i + 2]};
     return out;
   }
 
+  // the style of fix `id` ("" if there is none) and of the pair style
+  std::string fix_style(const std::string &id)
+  {
+    const int i = lmp->modify->find_fix(id);
+    return i < 0 ? "" : lmp->modify->fix[i]->style;
+  }
+  std::string pair_style() { return lmp->force->pair_style ? lmp->force->pair_style : ""; }
+
+  // a per-cell field of fix `id` (flat, x fastest) via Fix::extract, e.g. "pressure"
+  std::vector<double> fix_field(const std::string &id, const char *name, int size)
+  {
+    int dim = 0;
+    LAMMPS_NS::Fix *fix = lmp->modify->fix[lmp->modify->find_fix(id)];
+    const double *data = (const double *) fix->extract(name, dim);
+    if (!data) throw std::runtime_error("fix " + id + " has no field " + name);
+    return std::vector<double>(data, data + size);
+  }
+
   LAMMPS_NS::LAMMPS *lmp;
 };
+
+// largest component-wise difference of two arrays of numbers
+inline double max_abs_diff(const std::vector<double> &a, const std::vector<double> &b)
+{
+  if (a.size() != b.size()) throw std::runtime_error("max_abs_diff: sizes differ");
+  double worst = 0.0;
+  for (size_t i = 0; i < a.size(); i++) worst = std::max(worst, std::abs(a[i] - b[i]));
+  return worst;
+}
 
 // largest component-wise difference of two gathered per-atom arrays
 inline double max_abs_diff(const std::map<long, std::vector<double>> &a,
                            const std::map<long, std::vector<double>> &b)
 {
   double worst = 0.0;
-  for (const auto &kv : a) {
-    const auto &u = kv.second;
-    const auto &w = b.at(kv.first);
-    for (int k = 0; k < 3; k++) worst = std::max(worst, std::abs(u[k] - w[k]));
-  }
+  for (const auto &kv : a) worst = std::max(worst, max_abs_diff(kv.second, b.at(kv.first)));
   return worst;
 }
 
@@ -123,13 +153,6 @@ inline void expect_error(Lammps &l, const std::string &commands, const std::stri
   }
 }
 
-// "{}" in `fmt` replaced by `arg`
-inline std::string format(const std::string &fmt, const std::string &arg)
-{
-  std::string out = fmt;
-  return out.replace(out.find("{}"), 2, arg);
-}
-
 // Runs our lmp on `script` (the plugin loaded first) in a separate process, as users do.
 inline void run_lmp(const std::string &script, const std::string &args = "",
                     const std::string &name = "pwtest_subprocess")
@@ -141,16 +164,24 @@ inline void run_lmp(const std::string &script, const std::string &args = "",
   if (std::system(cmd.c_str()) != 0) throw std::runtime_error("lmp failed: " + cmd);
 }
 
-// id xu yu zu rows of a write_dump custom file, by atom id
+// the rows of a write_dump custom file whose first column is id (e.g. id xu yu zu), by id
 inline std::map<long, std::vector<double>> read_dump(const std::string &file)
 {
   std::ifstream in(file);
   std::string line;
   while (std::getline(in, line) && line.rfind("ITEM: ATOMS", 0) != 0) {}
+  if (line.rfind("ITEM: ATOMS", 0) != 0) throw std::runtime_error("no atoms in dump " + file);
+  std::istringstream header(line.substr(11));
+  std::string column;
+  int columns = 0;
+  while (header >> column) columns++;
   std::map<long, std::vector<double>> out;
   long id;
-  double x, y, z;
-  while (in >> id >> x >> y >> z) out[id] = {x, y, z};
+  while (columns > 1 && in >> id) {
+    std::vector<double> row(columns - 1);
+    for (double &v : row) in >> v;
+    out[id] = row;
+  }
   if (out.empty()) throw std::runtime_error("no atoms in dump " + file);
   return out;
 }

@@ -2,9 +2,8 @@
 // at rest (p exactly constant) and moving (balance closes to the solve tolerance, and
 // survives a restart), a stiff fluid at a large fluid step, and the bad states it must
 // catch (a non-finite grain, an overflowing system, a grid finer than the grains).
+#include "darcy_inputs.h"
 #include "lammps_fixture.h"
-
-#include "fix.h"
 
 #include <gtest/gtest.h>
 
@@ -22,28 +21,16 @@ namespace {
 
 std::vector<double> pressure(Lammps &l, int cells)
 {
-  const int i = l.lmp->modify->find_fix("fl");
-  int dim = 0;
-  const double *p = (const double *) l.lmp->modify->fix[i]->extract("pressure", dim);
-  return std::vector<double>(p, p + cells);
+  return l.fix_field("fl", "pressure", cells);
 }
 
-// 4 x 4 x 4 box, z closed, 64 grains of diameter 0.8 on a unit lattice (no contacts, no
-// pair style: they move only by their velocity and the fluid force), a 2 x 2 x 2 grid
+// the 64 grains in their 4 x 4 x 4 box of darcy_inputs.h, a 2 x 2 x 2 grid
 const int BOX_CELLS = 8;
-void grains_in_box(Lammps &l)
-{
-  l.commands("units lj\natom_style sphere\natom_modify map array\nboundary p p f\n"
-             "comm_modify vel yes cutoff 1.0\nlattice sc 1.0 origin 0.5 0.5 0.5\n"
-             "region box block 0 4 0 4 0 4\ncreate_box 1 box\ncreate_atoms 1 region box\n"
-             "set type 1 diameter 0.8\nset type 1 density 1.0\ntimestep 0.01\n"
-             "fix move all nve/sphere\nfix walls all wall/reflect zlo EDGE zhi EDGE\n");
-}
+void grains_in_box(Lammps &l) { l.commands(pwtest::grains_in_box); }
+
 // mu = beta = 1, k capped at KMAX; the defaults tol 1e-10, porosity 0.1 0.9
 const double KMAX = 0.01, TOL = 1e-10, PHI_MAX = 0.9;
-const std::string closed_fluid =
-    "fix fl all darcy/pressure grid 2 2 2 viscosity 1 compressibility 1 density 1 "
-    "permeability 1 kmax 0.01 top noflow bottom noflow";
+const std::string closed_fluid = pwtest::closed_box_fluid;
 
 // |balance residual| the solve tolerance allows over `fluid_steps` steps of dt_f (see
 // FluidBalance::allowance): per step V dt/mu sum_c A_cc tol max|p|, with

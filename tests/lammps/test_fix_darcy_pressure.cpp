@@ -1,11 +1,10 @@
-// fix darcy/pressure and darcy/pressure/kk driven through LAMMPS: exact zero, Terzaghi
-// and a tidal top through the fix's wiring (timestep, every, variables, profile file),
-// the force on one grain, porosity of a lattice, fluidisation of a bed, MPI
-// decompositions, restarts, KOKKOS and bad input. The solver's accuracy itself is
+// fix darcy/pressure driven through LAMMPS: exact zero, Terzaghi and a tidal top through
+// the fix's wiring (timestep, every, variables, profile file), the force on one grain,
+// porosity of a lattice, fluidisation of a bed. KOKKOS, MPI decompositions, restarts and
+// bad input: the style matrix (test_style_matrix.cpp). The solver's accuracy itself is
 // tested in tests/unit/test_darcy_solver.cpp.
+#include "darcy_inputs.h"
 #include "lammps_fixture.h"
-
-#include "fix.h"
 
 #include "analytic_solutions.h"
 
@@ -13,53 +12,26 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
 
-using pwtest::Accel;
 using pwtest::Lammps;
-using pwtest::expect_error;
+using pwtest::critical_gradient;
+using pwtest::empty_column;
+using pwtest::max_abs_diff;
+using pwtest::unit_diffusivity;
 
 namespace {
 
 const double PI = 3.14159265358979323846;
 
-LAMMPS_NS::Fix *fix_of(Lammps &l, const char *id = "fl")
-{
-  const int i = l.lmp->modify->find_fix(id);
-  return i < 0 ? nullptr : l.lmp->modify->fix[i];
-}
-
-// a per-cell field of the fix (flat, x fastest), via Fix::extract
+// a per-cell field of fix fl (flat, x fastest)
 std::vector<double> field(Lammps &l, const char *name, int size)
 {
-  int dim = 0;
-  const double *data = (const double *) fix_of(l)->extract(name, dim);
-  return std::vector<double>(data, data + size);
+  return l.fix_field("fl", name, size);
 }
-
-double max_abs_diff(const std::vector<double> &a, const std::vector<double> &b)
-{
-  double worst = 0.0;
-  for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::fabs(a[i] - b[i]));
-  return worst;
-}
-
-// Grain-free column [0,1]^2 x [0,height], z non-periodic. The fix's parameters give
-// D = k/(beta phi mu) = 1: no grains, so phi = MAX = 0.9, and k = kmax = 0.9 (the
-// Kozeny-Carman value 72.9 lies above the cap).
-void empty_column(Lammps &l, double height)
-{
-  l.commands("units lj\natom_style sphere\nboundary p p f\n");
-  l.command("region box block 0 1 0 1 0 " + std::to_string(height));
-  l.command("create_box 1 box");
-}
-const std::string unit_diffusivity =
-    " viscosity 1 compressibility 1 density 1 permeability 1 kmax 0.9";
-
 
 // the blocks of a profile file: step -> per layer {z, p, phi, k, vbar_z}
 std::map<long, std::vector<std::vector<double>>> read_profile(const std::string &path)
@@ -87,53 +59,6 @@ std::map<long, std::vector<std::vector<double>>> read_profile(const std::string 
   return blocks;
 }
 
-// Simple-cubic bed of 8 x 8 x 5 grains of diameter d = 0.01 m (SI units) touching in
-// columns, the bottom layer frozen (not integrated), in a 0.08 x 0.08 x 0.2 m box. Fluid
-// grid 2 x 2 x 10 from z = 0 to 0.2 with k capped to a uniform 1e-7 m^2 (kc is 1000x the
-// cap, so the cap holds for every porosity >= 0.1): a Dirichlet bottom p_b and a top 0 then
-// give the uniform gradient -p_b/0.2 in steady state, grains or not.
-void bed(Lammps &l, double p_bottom, int every, bool integrate, const std::string &processors = "")
-{
-  l.commands("units si\natom_style sphere\natom_modify map array\nboundary p p f\n"
-             "comm_modify vel yes\n" + processors + "\n"
-             "lattice sc 0.01 origin 0.5 0.5 0.5\nregion box block 0 8 0 8 0 20\n"
-             "create_box 1 box\nregion bed block 0 8 0 8 0 5\ncreate_atoms 1 region bed\n"
-             "set type 1 diameter 0.01\nset type 1 density 2600\n"
-             "region floor block INF INF INF INF INF 0.01 units box\ngroup floor region floor\n"
-             "group mobile subtract all floor\n"
-             "pair_style gran/hooke/history 1e4 NULL 0 NULL 0.5 0\npair_coeff * *\n"
-             "neighbor 0.002 bin\nneigh_modify delay 0 every 1 check yes\ntimestep 2.5e-5\n"
-             "fix weight mobile gravity 9.81 vector 0 0 -1\n"
-             "variable zmean equal xcm(mobile,z)\n");
-  l.command("fix fl all darcy/pressure grid 2 2 10 viscosity 1e-3 compressibility 5e-6 "
-            "density 1000 permeability 1e-4 kmax 1e-7 gravity 0 0 -9.81 bottom " +
-            std::to_string(p_bottom) + " every " + std::to_string(every));
-  if (integrate) l.command("fix move mobile nve/sphere");
-}
-
-const int bed_cells = 2 * 2 * 10;
-
-// positions keyed by lattice site instead of atom ID: create_atoms numbers the grains in
-// an order that depends on the decomposition (grains move far less than a spacing here)
-std::map<long, std::vector<double>> by_site(const std::map<long, std::vector<double>> &x)
-{
-  std::map<long, std::vector<double>> out;
-  for (const auto &kv : x) {
-    const auto &r = kv.second;
-    const long i = std::lround(r[0] / 0.01 - 0.5), j = std::lround(r[1] / 0.01 - 0.5),
-               k = std::lround(r[2] / 0.01 - 0.5);
-    out[i + 8 * (j + 8 * k)] = r;
-  }
-  return out;
-}
-
-// buoyant weight per grain volume, (rho_s - rho_f) g: the gradient that floats a grain
-const double critical_gradient = (2600.0 - 1000.0) * 9.81;
-
-// Two runs that differ by round-off agree in p only to the CG tolerance, 1e-10 max|p|
-// (the solves stop at different iterates), here 1e-10 * p_b = 6e-7 Pa: allow 10x that.
-const double bed_p_agreement = 1e-9 * 2.0 * critical_gradient * 0.2;
-
 }    // namespace
 
 // ---------------------------------------------------------------------------------------
@@ -142,7 +67,7 @@ TEST(FixDarcyPressure, NoGrainsStaysExactlyZero)
 {
   for (const char *bottom : {"noflow", "0.0"}) {    // closed below, or fixed at both ends
     Lammps l;
-    empty_column(l, 1.0);
+    l.commands(empty_column(1.0));
     l.command(std::string("fix fl all darcy/pressure grid 3 2 8") + unit_diffusivity +
               " bottom " + bottom + " every 3");
     l.commands("timestep 0.01\nrun 200\n");
@@ -162,7 +87,7 @@ TEST(FixDarcyPressure, SteadyStateSolvesInZeroIterationsAndKeepsPExactly)
   // change of p) meets the tolerance before any CG iteration and p stays bit-for-bit.
   for (const char *every : {"1", "3"}) {
     Lammps l;
-    empty_column(l, 1.0);
+    l.commands(empty_column(1.0));
     l.command(std::string("fix fl all darcy/pressure grid 2 1 8") + unit_diffusivity +
               " bottom 1 tol 1e-12 every " + every);
     l.commands("timestep 0.01\nrun 400\n");
@@ -183,7 +108,7 @@ TEST(FixDarcyPressure, TerzaghiThroughTheFixUsesTimestepAndEvery)
   std::vector<double> by_every, by_timestep;
   {
     Lammps l;
-    empty_column(l, 1.0);
+    l.commands(empty_column(1.0));
     l.command("fix fl all darcy/pressure grid 2 1 " + std::to_string(nz) + unit_diffusivity +
               " initial 1.0 every 4 profile 500 " + profile);
     l.commands("timestep 1e-4\nrun 2000\n");
@@ -193,7 +118,7 @@ TEST(FixDarcyPressure, TerzaghiThroughTheFixUsesTimestepAndEvery)
   }
   {
     Lammps l;
-    empty_column(l, 1.0);
+    l.commands(empty_column(1.0));
     l.command("fix fl all darcy/pressure grid 2 1 " + std::to_string(nz) + unit_diffusivity +
               " initial 1.0");
     l.commands("timestep 4e-4\nrun 500\n");
@@ -233,7 +158,7 @@ TEST(FixDarcyPressure, SinusoidalTopDecaysWithDepth)
   // transient has decayed to ~1e-3 after 9 periods. Fourier projection over the 10th
   // period from 20 samples (exact for a sinusoid).
   Lammps l;
-  empty_column(l, 1.0);
+  l.commands(empty_column(1.0));
   l.command("variable ptop equal 2.0*sin(2*PI*10*time)");
   l.command("fix fl all darcy/pressure grid 1 1 60" + unit_diffusivity + " top v_ptop");
   l.commands("timestep 5e-4\nrun 1800\n");
@@ -272,7 +197,7 @@ TEST(FixDarcyPressure, ZtopVariableMovesTheTopConditionAndVtkHoldsTheGrid)
   // and 0 above. D = 1: 400 steps of 0.01 leave the slowest mode at e^-110.
   const std::string prefix = "pw_darcy_ztop";
   Lammps l;
-  empty_column(l, 1.0);
+  l.commands(empty_column(1.0));
   l.command("variable zt equal 0.62");
   l.command("fix fl all darcy/pressure grid 1 2 10" + unit_diffusivity +
             " bottom 1 ztop v_zt tol 1e-13 vtk 400 " + prefix);
@@ -373,7 +298,8 @@ TEST(FixDarcyPressure, UpwardGradientFluidisesTheBedAboveCritical)
   // grains move for 0.05 s.
   auto mean_rise = [](double factor) {
     Lammps l;
-    bed(l, factor * critical_gradient * 0.2, 1, false);
+    l.commands(pwtest::bed());
+    l.command(pwtest::bed_fluid(factor * critical_gradient * 0.2, 1));
     l.command("run 150");
     EXPECT_NEAR(l.equal("f_fl[3]"), factor * critical_gradient * 0.2 *
                 (1.0 - 0.01 / 0.2), 1e-6 * critical_gradient);    // p of the bottom cells
@@ -389,138 +315,4 @@ TEST(FixDarcyPressure, UpwardGradientFluidisesTheBedAboveCritical)
   // lifted: net upward force = buoyant weight, a = 6.0 m/s^2 for 0.05 s: 7.5 mm, less the
   // suction of the dilating bed
   EXPECT_GT(above, 3e-3);
-}
-
-TEST(FixDarcyPressure, MpiDecompositionDoesNotChangeTheResult)
-{
-  // lifting bed, x-y decomposition (the bed is thin in z): mpirun -np 2 and 3 via ctest
-  auto run = [](MPI_Comm comm, std::vector<double> *p) {
-    Lammps l(Accel::none, comm);
-    bed(l, 2.0 * critical_gradient * 0.2, 2, true, "processors * * 1");
-    l.command("run 400");
-    *p = field(l, "pressure", bed_cells);
-    return by_site(l.gather3("x"));
-  };
-  std::vector<double> p_parallel, p_serial;
-  const auto parallel = run(MPI_COMM_WORLD, &p_parallel);
-  const auto serial = run(MPI_COMM_SELF, &p_serial);
-  ASSERT_EQ(parallel.size(), 320u);
-  int me = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &me);
-  if (me == 0)
-    std::printf("[ report ] MPI vs serial: max |dx| = %.2e m, max |dp| = %.2e Pa\n",
-              pwtest::max_abs_diff(parallel, serial), max_abs_diff(p_parallel, p_serial));
-  // deposits and contact forces summed in another order: round-off, not amplified by a
-  // lifting lattice (measured 2e-15 m); 1e-12 m is 1e-10 of a diameter. p: measured 1e-10
-  // Pa (np 2) and 4e-7 Pa (np 3), see bed_p_agreement
-  EXPECT_LE(pwtest::max_abs_diff(parallel, serial), 1e-12);
-  EXPECT_LE(max_abs_diff(p_parallel, p_serial), bed_p_agreement);
-}
-
-TEST(FixDarcyPressure, RestartSplitRunEqualsUnsplitRun)
-{
-  // every 3: the split at step 200 falls between fluid steps (198, 201)
-  for (Accel accel : {Accel::none, Accel::kokkos}) {
-    const std::string restart = std::string("pw_darcy_split") + (accel == Accel::none ? "" : "_kk") + ".restart";
-    std::map<long, std::vector<double>> whole, split;
-    std::vector<double> p_whole, p_split;
-    {
-      Lammps l(accel);
-      bed(l, 2.0 * critical_gradient * 0.2, 3, true);
-      l.command("run 200");
-      l.command("write_restart " + restart);
-      l.command("run 200");
-      whole = l.gather3("x");
-      p_whole = field(l, "pressure", bed_cells);
-    }
-    {
-      Lammps l(accel);
-      l.command("read_restart " + restart);
-      l.commands("comm_modify vel yes\nneighbor 0.002 bin\nneigh_modify delay 0 every 1 check yes\n"
-                 "timestep 2.5e-5\nfix weight mobile gravity 9.81 vector 0 0 -1\n");
-      l.command("fix fl all darcy/pressure grid 2 2 10 viscosity 1e-3 compressibility 5e-6 "
-                "density 1000 permeability 1e-4 kmax 1e-7 gravity 0 0 -9.81 bottom " +
-                std::to_string(2.0 * critical_gradient * 0.2) + " every 3 initial 123");
-      l.commands("fix move mobile nve/sphere\nrun 200\n");
-      split = l.gather3("x");
-      p_split = field(l, "pressure", bed_cells);
-    }
-    std::remove(restart.c_str());
-    // atoms re-sorted after read_restart: sums in another order, round-off only (the
-    // restart holds p, phi and the fluid clock; `initial 123` must be ignored)
-    const char *which = accel == Accel::none ? "cpu" : "kk";
-    std::printf("[ report ] restart split vs whole (%s): max |dx| = %.2e m, max |dp| = %.2e Pa\n",
-                which, pwtest::max_abs_diff(whole, split), max_abs_diff(p_whole, p_split));
-    EXPECT_LE(pwtest::max_abs_diff(whole, split), 1e-12) << which;
-    EXPECT_LE(max_abs_diff(p_whole, p_split), bed_p_agreement) << which;
-  }
-}
-
-TEST(FixDarcyPressure, KokkosEqualsCpu)
-{
-  auto run = [](Accel accel, std::vector<double> *p, std::vector<double> *fz) {
-    Lammps l(accel);
-    bed(l, 2.0 * critical_gradient * 0.2, 2, true);
-    EXPECT_STREQ(fix_of(l)->style, accel == Accel::kokkos ? "darcy/pressure/kk" : "darcy/pressure");
-    l.command("run 400");
-    *p = field(l, "pressure", bed_cells);
-    // the per-atom fluid force (z) by tag, read from the fix's array on the host
-    auto **fluid = (double **) lammps_extract_fix(l.lmp, "fl", LMP_STYLE_ATOM, LMP_TYPE_ARRAY, 0, 0);
-    fz->assign(l.atom()->natoms, 0.0);
-    for (int i = 0; i < l.atom()->nlocal; ++i) (*fz)[l.atom()->tag[i] - 1] = fluid[i][2];
-    return l.gather3("x");
-  };
-  std::vector<double> p_cpu, p_kk, f_cpu, f_kk;
-  const auto cpu = run(Accel::none, &p_cpu, &f_cpu);
-  const auto kk = run(Accel::kokkos, &p_kk, &f_kk);
-  ASSERT_GT(*std::max_element(f_cpu.begin(), f_cpu.end()), 0.0);
-  std::printf("[ report ] kk vs cpu: max |dx| = %.2e m, max |dp| = %.2e Pa, max |dfz| = %.2e N\n",
-              pwtest::max_abs_diff(cpu, kk), max_abs_diff(p_cpu, p_kk), max_abs_diff(f_cpu, f_kk));
-  // same stencil functions in the same order on one thread: round-off at most
-  EXPECT_LE(pwtest::max_abs_diff(cpu, kk), 1e-12);
-  EXPECT_LE(max_abs_diff(p_cpu, p_kk), bed_p_agreement);
-  EXPECT_LE(max_abs_diff(f_cpu, f_kk), 1e-12 * *std::max_element(f_cpu.begin(), f_cpu.end()));
-}
-
-TEST(FixDarcyPressure, BadInputGivesClearErrors)
-{
-  {
-    Lammps periodic;
-    periodic.commands("units lj\natom_style sphere\nregion box block 0 1 0 1 0 1\ncreate_box 1 box\n");
-    expect_error(periodic, "fix bad all darcy/pressure grid 2 2 2" + unit_diffusivity, "non-periodic in z");
-  }
-  {
-    Lammps atomic;
-    atomic.commands("units lj\natom_style atomic\nboundary p p f\nregion box block 0 1 0 1 0 1\n"
-                    "create_box 1 box\n");
-    expect_error(atomic, "fix bad all darcy/pressure grid 2 2 2" + unit_diffusivity, "requires atom_style sphere");
-  }
-  Lammps l;
-  empty_column(l, 1.0);
-  const std::string fix = "fix bad all darcy/pressure grid 2 2 4";
-  expect_error(l, fix + " viscosity 1 density 1 permeability 1",
-               "missing required keyword(s): compressibility");
-  expect_error(l, fix + unit_diffusivity + " porosity 0.2 1.0", "porosity MIN MAX needs 0 < MIN <= MAX < 1");
-  expect_error(l, fix + unit_diffusivity + " bottom closed", "bottom expects noflow, a finite number or v_name, got 'closed'");
-  expect_error(l, fix + unit_diffusivity + " top closed", "top expects noflow, a finite number or v_name, got 'closed'");
-  expect_error(l, fix + unit_diffusivity + " every 0", "every expects an integer >= 1, got '0'");
-  expect_error(l, fix + unit_diffusivity + " viscosity -1", "viscosity expects a finite number > 0, got '-1'");
-  expect_error(l, fix + unit_diffusivity + " gravity 0 0", "gravity expects a finite number, but the command ends there");
-  expect_error(l, fix + unit_diffusivity + " damping 1", "unknown keyword 'damping' (allowed: grid, viscosity,");
-  expect_error(l, "fix bad all darcy/pressure grid 2 0 4" + unit_diffusivity, "grid expects an integer >= 1, got '0'");
-
-  // variables are checked when the run starts
-  l.command(fix + unit_diffusivity + " top v_nowhere");
-  expect_error(l, "run 0", "variable nowhere for top does not exist");
-  l.command("unfix bad");
-  l.command("variable atomic atom x");
-  l.command(fix + unit_diffusivity + " ztop v_atomic");
-  expect_error(l, "run 0", "variable atomic for ztop is not equal-style");
-  l.command("unfix bad");
-
-  // a solve that cannot reach its tolerance stops the run and says where and why (last:
-  // the run is left half done)
-  l.command(fix + unit_diffusivity + " initial 1.0 tol 1e-14 maxiter 1");
-  l.command("timestep 1e-3");
-  expect_error(l, "run 1", "the pressure solve did not converge in 1 iterations");
 }

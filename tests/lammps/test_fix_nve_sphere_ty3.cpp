@@ -1,20 +1,17 @@
-// fix nve/sphere/ty3 and nve/sphere/ty3/kk: exactness on a constant jerk, convergence order on
-// a head-on collision (against nve/sphere), history through restarts, sorting, MPI
-// migration and KOKKOS, input errors.
+// fix nve/sphere/ty3: exactness on a constant jerk, convergence order on a head-on
+// collision (against nve/sphere), the history through sorting. Its history through
+// restarts and MPI migration, KOKKOS and input errors: the style matrix
+// (test_style_matrix.cpp).
 #include "fix_walls_inputs.h"
 #include "granular_inputs.h"
 #include "lammps_fixture.h"
-
-#include "fix.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
-using pwtest::Accel;
 using pwtest::Lammps;
-using pwtest::expect_error;
 
 namespace {
 
@@ -182,53 +179,6 @@ TEST(FixNVESphereTY3, HeadOnCollisionConvergesAtTheExpectedOrder)
 
 // ---------------------------------------------------------------------------------------
 
-namespace {
-
-// the dense gas of granular_inputs.h with friction, integrated by `integrator`
-std::string frictional_gas(const std::string &integrator, int nside = 6)
-{
-  return pwtest::dense_gas(nside) +
-      "pair_style linear/coulomb\npair_coeff * * 2000.0 2000.0 0.5\n"
-      "unfix integrate\nfix integrate all " +
-      integrator + "\n";
-}
-
-}    // namespace
-
-TEST(FixNVESphereTY3, RestartSplitRunEqualsUnsplitRun)
-{
-  // separate lmp processes, as users run them (see the pair style's restart test)
-  const std::vector<std::string> values = {"ke", "c_erot"};
-  for (const std::string integrator : {TY3, TY3_CORRECTED}) {
-    for (const std::string accel : {"", "-k on t 1 -sf kk"}) {
-      const std::string tag =
-          std::string(integrator == TY3 ? "ty3" : "ty3c") + (accel.empty() ? "_cpu" : "_kk");
-      const std::string whole = "pw_ty3_whole_" + tag, split = "pw_ty3_split_" + tag,
-                        forgot = "pw_ty3_forgot_" + tag;
-      pwtest::run_lmp(frictional_gas(integrator) + "run 150\nwrite_restart " + split +
-                          ".restart\nrun 150\n" + pwtest::save_results(whole, values),
-                      accel, whole);
-      const std::string resume = "read_restart " + split + ".restart\n" +
-          pwtest::dense_gas_settings() + "unfix integrate\n";
-      pwtest::run_lmp(resume + "fix integrate all " + integrator + "\nrun 150\n" +
-                          pwtest::save_results(split, values),
-                      accel, split);
-      // control: another fix ID finds no history in the file and restarts with ȧ = 0
-      pwtest::run_lmp(resume + "fix fresh all " + integrator + "\nrun 150\n" +
-                          pwtest::save_results(forgot, values),
-                      accel, forgot);
-      const double lost = pwtest::max_abs_diff(pwtest::read_dump(whole + ".dump"),
-                                               pwtest::read_dump(forgot + ".dump"));
-      std::printf("[ report ] %s: without the stored history the run differs by %.2e\n",
-                  tag.c_str(), lost);
-      EXPECT_GT(lost, 1e-8) << tag;
-      pwtest::remove_results(forgot);
-      // the same operations in the same order: bit for bit (17 printed digits)
-      pwtest::expect_identical_results(whole, split, tag);
-    }
-  }
-}
-
 TEST(FixNVESphereTY3, SortingAtomsKeepsEachAtomsHistory)
 {
   // atom_modify sort reorders the local atoms every 5 steps, moving the history with
@@ -237,7 +187,8 @@ TEST(FixNVESphereTY3, SortingAtomsKeepsEachAtomsHistory)
   std::map<long, std::vector<double>> x[2];
   for (int k = 0; k < 2; k++) {
     Lammps l;
-    l.commands(frictional_gas(TY3_CORRECTED));
+    l.commands(pwtest::frictional_gas() + "unfix integrate\nfix integrate all " +
+               TY3_CORRECTED + "\n");
     l.command(k == 0 ? "atom_modify sort 0 0.0" : "atom_modify sort 5 0.5");
     l.command("run 300");
     x[k] = l.gather3("x");
@@ -245,59 +196,4 @@ TEST(FixNVESphereTY3, SortingAtomsKeepsEachAtomsHistory)
   std::printf("[ report ] sorted vs unsorted after 300 steps: max |dx| %.1e\n",
               pwtest::max_abs_diff(x[0], x[1]));
   EXPECT_LE(pwtest::max_abs_diff(x[0], x[1]), 1e-9);
-}
-
-TEST(FixNVESphereTY3, KokkosEqualsCpu)
-{
-  for (const std::string integrator : {TY3, TY3_CORRECTED}) {
-    std::map<long, std::vector<double>> x[2], omega[2];
-    std::string style;
-    const Accel accel[2] = {Accel::none, Accel::kokkos};
-    for (int k = 0; k < 2; k++) {
-      Lammps l(accel[k]);
-      l.commands(frictional_gas(integrator));
-      l.command("run 300");
-      x[k] = l.gather3("x");
-      omega[k] = l.gather3("omega");
-      style = l.lmp->modify->fix[l.lmp->modify->find_fix("integrate")]->style;
-    }
-    EXPECT_EQ(style, "nve/sphere/ty3/kk");
-    std::printf("[ report ] %s/kk vs CPU after 300 steps: max |dx| %.1e max |domega| %.1e\n",
-                integrator.c_str(), pwtest::max_abs_diff(x[0], x[1]),
-                pwtest::max_abs_diff(omega[0], omega[1]));
-    // contacts summed in another order: round-off amplified by 300 steps of a dense gas
-    EXPECT_LE(pwtest::max_abs_diff(x[0], x[1]), 1e-9) << integrator;
-    EXPECT_LE(pwtest::max_abs_diff(omega[0], omega[1]), 1e-7) << integrator;
-  }
-}
-
-TEST(FixNVESphereTY3, MpiMigrationCarriesTheHistory)
-{
-  // under mpirun -np 2 and 3 grains cross between ranks and take their a_prev along
-  auto run = [](MPI_Comm comm) {
-    Lammps l(Accel::none, comm);
-    l.commands(frictional_gas(TY3_CORRECTED));
-    l.command("run 300");
-    return l.gather3("x");
-  };
-  const auto parallel = run(MPI_COMM_WORLD);
-  const auto serial = run(MPI_COMM_SELF);
-  std::printf("[ report ] ty3 decomposed vs serial: max |dx| %.1e\n",
-              pwtest::max_abs_diff(parallel, serial));
-  EXPECT_LE(pwtest::max_abs_diff(parallel, serial), 1e-9);
-}
-
-TEST(FixNVESphereTY3, BadInputGivesClearErrors)
-{
-  {
-    Lammps l;
-    l.commands(pwtest::dense_gas(3));
-    expect_error(l, "fix t all nve/sphere/ty3 corrector", "corrector expects yes or no, but the command ends there");
-    expect_error(l, "fix t all nve/sphere/ty3 corrector maybe",
-                 "corrector expects yes or no, got 'maybe'");
-    expect_error(l, "fix t all nve/sphere/ty3 disc", "unknown keyword 'disc' (allowed: corrector)");
-  }
-  Lammps atomic;    // one instance at a time (see lammps_fixture.h)
-  atomic.commands("units lj\natom_style atomic\nregion b block 0 4 0 4 0 4\ncreate_box 1 b\n");
-  expect_error(atomic, "fix t all nve/sphere/ty3", "requires atom_style sphere");
 }

@@ -1,9 +1,8 @@
-// fix shear/stress and shear/stress/kk: a free plate under τ, resisting forces, a plate
-// pressed by fix wall/stress onto a frictional bed, restarts, KOKKOS, MPI and input errors.
+// fix shear/stress: a free plate under τ, resisting forces, a plate pressed by fix
+// wall/stress onto a frictional bed. KOKKOS, MPI, restarts and input errors: the style
+// matrix (test_style_matrix.cpp).
 #include "fix_walls_inputs.h"
 #include "lammps_fixture.h"
-
-#include "fix.h"
 
 #include <gtest/gtest.h>
 
@@ -11,55 +10,15 @@
 #include <cmath>
 #include <cstdio>
 
-using pwtest::Accel;
 using pwtest::Lammps;
-using pwtest::expect_error;
+using pwtest::PLATE_ACCELERATION;
+using pwtest::sheared_stack;
 
 namespace {
 
-// six grains 2 apart in one layer (no contacts) in a 6 × 4 box (area 24), moving in y and z
-// and spinning. τ = 0.5, M = 12: the plate's acceleration is τ L_x L_y / M = 1.
-const double PLATE_ACCELERATION = 1.0;
 void free_layer(Lammps &l, const std::string &integrator)
 {
-  l.commands("units lj\natom_style sphere\natom_modify map array\nboundary p p f\n"
-             "comm_modify vel yes\nlattice sc 0.125 origin 0.5 0.5 0.5\n"
-             "region box block 0 6 0 4 -4 8 units box\ncreate_box 1 box\n"
-             "region layer block 0 6 0 4 0 2 units box\ncreate_atoms 1 region layer\n" +
-             pwtest::unit_grains +
-             "velocity all create 1.0 4321 loop geom\nvelocity all set 0 NULL NULL\n"
-             "set group all omega 0.3 -0.2 0.5\n"
-             "pair_style zero 1.0\npair_coeff * *\nneighbor 0.2 bin\ntimestep 0.001\n");
-  l.command("fix integrate all " + integrator);
-}
-
-// two layers of the cubic stack with friction μ = 0.5: the bottom one fixed (not integrated),
-// the top one (`mobile`) pressed on it by the wall at σ = 10 until settled, then sheared as
-// the plate at τ. Each column's contact holds at most μσ = 5 per unit area; A/M = 1.
-std::string sheared_stack_fixes(double tau, int nxy)
-{
-  const std::string columns = std::to_string(nxy * nxy);
-  return "pair_coeff * * 1e4 1e4 0.5\ntimestep 5e-4\nfix integrate mobile nve/sphere\n"
-         "fix w all wall/stress z auto stress 10 mass " +
-      columns +
-      " kn 1e4 damping 100\n"
-      "run 2000\n"
-      "fix s mobile shear/stress tau " +
-      std::to_string(tau) + " mass " + columns + "\n";
-}
-std::string sheared_stack(double tau)
-{
-  return pwtest::cubic_stack(3, 3, 2, 5.0) + sheared_stack_fixes(tau, 3);
-}
-
-struct PlateRun {
-  double velocity, displacement, stress;
-  std::map<long, std::vector<double>> x;
-};
-
-PlateRun record(Lammps &l)
-{
-  return {l.equal("f_s[1]"), l.equal("f_s[2]"), l.equal("f_s[3]"), l.gather3("x")};
+  l.commands(pwtest::free_layer(integrator));
 }
 
 }    // namespace
@@ -144,100 +103,4 @@ TEST(FixShearStress, PlateSticksBelowAndSlidesAboveTheFrictionLimit)
     EXPECT_LE(resisting, mu * sigma);
     EXPECT_GT(resisting, 0.9 * mu * sigma);    // sliding, with the normals tilted by ~1°
   }
-}
-
-TEST(FixShearStress, RestartSplitRunEqualsUnsplitRun)
-{
-  // separate lmp processes, as users run them: within one process LAMMPS 29Sep2021 names the
-  // contacts' history fix by a process-wide pair counter, so a second instance would not
-  // find the frictional histories in the restart file
-  const std::vector<std::string> values = {"f_s[1]", "f_s[2]", "f_s[3]"};
-  for (const std::string accel : {"", "-k on t 1 -sf kk"}) {
-    const std::string tag = accel.empty() ? "cpu" : "kk";
-    const std::string whole = "pw_shear_whole_" + tag, split = "pw_shear_split_" + tag;
-    pwtest::run_lmp(sheared_stack(3.0) + "run 1000\nwrite_restart " + split +
-                        ".restart\nrun 1000\n" + pwtest::save_results(whole, values),
-                    accel, whole);
-    pwtest::run_lmp(
-        "newton off\nread_restart " + split +
-            ".restart\n"
-            "comm_modify vel yes\nneighbor 0.2 bin\nneigh_modify delay 0 every 1 check yes\n"
-            "fix integrate mobile nve/sphere\n"
-            "fix w all wall/stress z auto stress 10 mass 9 kn 1e4 damping 100\n"
-            "fix s mobile shear/stress tau 3.0 mass 9\nrun 1000\n" +
-            pwtest::save_results(split, values),
-        accel, split);
-    ASSERT_GT(std::fabs(pwtest::read_values(whole)[1]), 1e-4) << tag;    // the plate has moved
-    // same operations in the same order; the displacement carries on from the restart
-    pwtest::expect_identical_results(whole, split, tag);
-  }
-}
-
-TEST(FixShearStress, KokkosEqualsCpu)
-{
-  PlateRun run[2];
-  std::string style[2];
-  const Accel accel[2] = {Accel::none, Accel::kokkos};
-  for (int k = 0; k < 2; k++) {
-    Lammps l(accel[k]);
-    l.commands(sheared_stack(3.0));
-    l.command("run 2000");
-    run[k] = record(l);
-    style[k] = l.lmp->modify->fix[l.lmp->modify->find_fix("s")]->style;
-  }
-  EXPECT_EQ(style[1], "shear/stress/kk");
-  ASSERT_GT(std::fabs(run[0].displacement), 1e-4);
-  std::printf("[ report ] shear/stress/kk vs CPU after 2000 steps: |dd| %.1e |dv| %.1e |dstress| "
-              "%.1e max |dx| %.1e\n",
-              std::fabs(run[1].displacement - run[0].displacement),
-              std::fabs(run[1].velocity - run[0].velocity),
-              std::fabs(run[1].stress - run[0].stress), pwtest::max_abs_diff(run[0].x, run[1].x));
-  // frictional contacts summed in another order: round-off amplified by 2000 steps
-  EXPECT_NEAR(run[1].displacement, run[0].displacement, 1e-10);
-  EXPECT_NEAR(run[1].velocity, run[0].velocity, 1e-9);
-  EXPECT_NEAR(run[1].stress, run[0].stress, 1e-8);
-  EXPECT_LE(pwtest::max_abs_diff(run[0].x, run[1].x), 1e-10);
-}
-
-TEST(FixShearStress, MpiDecompositionDoesNotChangeThePlate)
-{
-  auto run = [](MPI_Comm comm) {
-    Lammps l(Accel::none, comm);
-    l.commands(pwtest::cubic_stack(6, 6, 2, 5.0));
-    const auto x0 = l.gather3("x");
-    l.commands(sheared_stack_fixes(3.0, 6));
-    l.command("run 1000");
-    PlateRun r = record(l);
-    r.x = pwtest::by_site(x0, r.x);
-    return r;
-  };
-  const PlateRun parallel = run(MPI_COMM_WORLD);
-  const PlateRun serial = run(MPI_COMM_SELF);
-  std::printf("[ report ] shear/stress decomposed vs serial: |dd| %.1e |dv| %.1e |dstress| %.1e "
-              "max |dx| %.1e\n",
-              std::fabs(parallel.displacement - serial.displacement),
-              std::fabs(parallel.velocity - serial.velocity),
-              std::fabs(parallel.stress - serial.stress),
-              pwtest::max_abs_diff(parallel.x, serial.x));
-  EXPECT_NEAR(parallel.displacement, serial.displacement, 1e-10);
-  EXPECT_NEAR(parallel.velocity, serial.velocity, 1e-9);
-  EXPECT_NEAR(parallel.stress, serial.stress, 1e-8);
-  EXPECT_LE(pwtest::max_abs_diff(parallel.x, serial.x), 1e-10);
-}
-
-TEST(FixShearStress, BadInputAndRunawayGiveClearErrors)
-{
-  Lammps l;
-  free_layer(l, "nve/sphere");
-  expect_error(l, "fix s all shear/stress tau 0.5", "missing required keyword(s): mass");
-  expect_error(l, "fix s all shear/stress tau 0.5 mass", "mass expects a number > 0, but the command ends there");
-  expect_error(l, "fix s all shear/stress tau 0.5 mass 0", "mass expects a finite number > 0, got '0'");
-  expect_error(l, "fix s all shear/stress tau v_tau mass 1", "tau expects a finite number, got 'v_tau'");
-  expect_error(l, "fix s all shear/stress tau 0.5 mass 1 lock y",
-               "unknown keyword 'lock' (allowed: tau, mass)");
-  expect_error(l, "group none empty\nfix s none shear/stress tau 0.5 mass 1\nrun 0",
-               "group none has no grains");
-  l.command("unfix s");
-  // a = 2400: the plate moves a·n·Δt² in step n, more than half the skin (0.1) at n ≈ 42
-  expect_error(l, "fix s all shear/stress tau 1200 mass 12\nrun 100", "the plate ran away at step");
 }
