@@ -59,6 +59,8 @@ TEST(KeywordReader, EveryMessageNamesTheCommandTheKeywordAndWhatItAccepts)
                         "1", "permeability", "1", "top", "open"},
                        darcy),
             "Illegal fix test command: top expects noflow, a finite number or v_name, got 'open'");
+  EXPECT_EQ(message_of({"grid", "2", "2", "2", "vtk", "30", ""}, darcy),
+            "Illegal fix test command: vtk expects a file name prefix, got ''");
   EXPECT_EQ(message_of({"grid", "2", "0", "2"}, darcy),
             "Illegal fix test command: grid expects an integer >= 1, got '0'");
   auto pair = [](KeywordReader &in) { parse_linear_coulomb(in); };

@@ -145,9 +145,12 @@ bool KeywordReader::accept(const char *word)
   return true;
 }
 
-std::string KeywordReader::word()
+std::string KeywordReader::word(const char *expects)
 {
-  return value("a name");
+  const std::string &token = value(expects);
+  // an empty name could not be opened later, and then on one rank only
+  if (token.empty()) bad_value(token, expects);
+  return token;
 }
 
 void KeywordReader::unknown_keyword(std::initializer_list<const char *> allowed) const

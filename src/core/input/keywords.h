@@ -54,7 +54,7 @@ class KeywordReader {
   bool yes_no() { return choice({"yes", "no"}) == 0; }
   // the next token if it is `word` (consumed), for alternatives like `z auto`
   bool accept(const char *word);
-  std::string word();    // any token (a file name, a prefix)
+  std::string word(const char *expects);    // a non-empty token (a file name, a prefix)
 
   [[noreturn]] void unknown_keyword(std::initializer_list<const char *> allowed) const;
   // stop unless every keyword in `names` was given (given[k] for names[k])

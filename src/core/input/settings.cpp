@@ -155,10 +155,10 @@ DarcySettings parse_darcy(KeywordReader &in, double box_zlo, double box_zhi)
       if (!(s.zhi > box_zlo)) in.fail("zhi must lie above the box bottom");
     } else if (key == "profile") {
       s.profile_every = in.count();
-      s.profile_path = in.word();
+      s.profile_path = in.word("a file name");
     } else if (key == "vtk") {
       s.vtk_every = in.count();
-      s.vtk_prefix = in.word();
+      s.vtk_prefix = in.word("a file name prefix");
     } else {
       in.unknown_keyword({"grid", "viscosity", "compressibility", "density", "permeability",
                           "top", "ztop", "bottom", "initial", "gravity", "porosity", "kmax",
