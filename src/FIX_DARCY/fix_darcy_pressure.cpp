@@ -46,8 +46,15 @@ FixDarcyPressure::FixDarcyPressure(LAMMPS *lmp, int narg, char **arg) :
   const porewater::GridGeom geom{domain->boxlo[0], domain->boxlo[1], zlo,
                                  domain->prd[0] / s.grid[0], domain->prd[1] / s.grid[1],
                                  (s.zhi - zlo) / s.grid[2], s.grid[0], s.grid[1], s.grid[2]};
+  // every rank holds the whole grid: the ranks sharing this node's memory hold as many copies
+  MPI_Comm node;
+  MPI_Comm_split_type(world, MPI_COMM_TYPE_SHARED, comm->me, MPI_INFO_NULL, &node);
+  int ranks_on_node = 1;
+  MPI_Comm_size(node, &ranks_on_node);
+  MPI_Comm_free(&node);
   fluid = porewater::or_stop(lmp, [&] {
-    return std::unique_ptr<porewater::DarcyFluid>(new porewater::DarcyFluid(s, geom, id));
+    return std::unique_ptr<porewater::DarcyFluid>(
+        new porewater::DarcyFluid(s, geom, id, ranks_on_node));
   });
 
   if (comm->me == 0) {

@@ -26,7 +26,7 @@ std::string number(double v, int digits = 6)
 
 // a grid whose index arithmetic overflows an int, or that the machine cannot hold, stops
 // before anything is allocated
-void check_grid_fits(const DarcySettings &s)
+void check_grid_fits(const DarcySettings &s, int copies)
 {
   const double cells = (double) s.grid[0] * s.grid[1] * s.grid[2];
   const double blocks = (double) s.grid[0] * s.grid[1] * (s.grid[2] + 1);
@@ -39,21 +39,24 @@ void check_grid_fits(const DarcySettings &s)
                      " array slots, more than an int indexes (" + std::to_string(INT_MAX) + ")");
   const GridGeom geom{0, 0, 0, 1, 1, 1, s.grid[0], s.grid[1], s.grid[2]};
   const double bytes = DarcyFluid::bytes_for(geom), memory = DarcyFluid::machine_memory();
-  if (memory > 0.0 && bytes > memory)
+  if (memory > 0.0 && copies * bytes > memory)
     throw InputError("Illegal fix darcy/pressure command: grid " + grid + " has " + number(cells) +
-                     " cells and needs " + number(bytes) + " bytes, more than this machine's " +
-                     number(memory) + " bytes of memory");
+                     " cells and needs " + number(bytes) + " bytes" +
+                     (copies > 1 ? " on each of the " + std::to_string(copies) + " ranks of this node"
+                                 : std::string()) +
+                     ", more than this machine's " + number(memory) + " bytes of memory");
 }
 
 }    // namespace
 
-DarcyFluid::DarcyFluid(const DarcySettings &settings, const GridGeom &geom, const std::string &id) :
+DarcyFluid::DarcyFluid(const DarcySettings &settings, const GridGeom &geom, const std::string &id,
+                       int copies) :
     settings_(settings), grid_(coupling_grid(geom)), id_(id), field_changed_(true),
     stencils_kept_(false), started_(false), last_fluid_step_(0), force_step_(-1),
     last_solve_{true, 0, 0.0, 0.0, -1}, porosity_warned_(false), profile_(nullptr),
     last_profile_step_(-1), last_vtk_step_(-1)
 {
-  check_grid_fits(settings);
+  check_grid_fits(settings, copies);
   solver_.reset(new DarcySolver(geom, settings.params));
   if (!settings_.z_top_given) settings_.z_top = NumberOrVariable{solver_->z_grid_top(), ""};
   sums_.assign(grid_.sums_size(), 0.0);

@@ -79,8 +79,10 @@ class DarcyFluid {
   static const RestartFormat RESTART;
 
   // Throws InputError when the grid cannot be held (int index overflow, more memory than
-  // the machine has), before allocating it. `id` names the fix in messages and files.
-  DarcyFluid(const DarcySettings &settings, const GridGeom &geom, const std::string &id);
+  // the machine has for `copies` of it: every rank on a node holds the whole grid), before
+  // allocating it. `id` names the fix in messages and files.
+  DarcyFluid(const DarcySettings &settings, const GridGeom &geom, const std::string &id,
+             int copies = 1);
   ~DarcyFluid();
   DarcyFluid(const DarcyFluid &) = delete;
   DarcyFluid &operator=(const DarcyFluid &) = delete;
