@@ -8,6 +8,7 @@
 
 #include "fix_darcy_pressure.h"
 
+#include "lammps_compat.h"
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
@@ -29,7 +30,7 @@ using namespace FixConst;
 FixDarcyPressure::FixDarcyPressure(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), fluid_force(nullptr), maxatom(0)
 {
-  if (!atom->sphere_flag) error->all(FLERR, "fix darcy/pressure requires atom_style sphere");
+  if (!porewater::has_sphere_attributes(atom)) error->all(FLERR, "fix darcy/pressure requires atom_style sphere");
   if (domain->triclinic) error->all(FLERR, "fix darcy/pressure requires an orthogonal box");
   if (!domain->xperiodic || !domain->yperiodic || domain->zperiodic)
     error->all(FLERR, "fix darcy/pressure requires boundaries periodic in x and y and "

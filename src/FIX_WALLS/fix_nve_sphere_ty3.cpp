@@ -16,6 +16,7 @@
 #include "input/restart_state.h"
 #include "integrate/taylor3.h"
 #include "input/settings.h"
+#include "lammps_compat.h"
 #include "lammps_input.h"
 
 #include "atom.h"
@@ -39,7 +40,7 @@ FixNVESphereTY3::FixNVESphereTY3(LAMMPS *lmp, int narg, char **arg) :
   corrector = porewater::parse_or_stop(lmp, "fix nve/sphere/ty3", narg - 3, arg + 3,
                                        porewater::parse_ty3)
                   .corrector;
-  if (!atom->sphere_flag) error->all(FLERR, "Fix nve/sphere/ty3 requires atom_style sphere");
+  if (!porewater::has_sphere_attributes(atom)) error->all(FLERR, "Fix nve/sphere/ty3 requires atom_style sphere");
 
   time_integrate = 1;
   restart_global = 1;

@@ -12,6 +12,7 @@
 
 #include "grains/host_grains.h"
 #include "input/restart_state.h"
+#include "lammps_compat.h"
 #include "lammps_input.h"
 
 #include "atom.h"
@@ -40,7 +41,7 @@ FixShearStress::FixShearStress(LAMMPS *lmp, int narg, char **arg) :
 {
   settings = porewater::parse_or_stop(lmp, "fix shear/stress", narg - 3, arg + 3,
                                       porewater::parse_shear_stress);
-  if (!atom->sphere_flag) error->all(FLERR, "Fix shear/stress requires atom_style sphere");
+  if (!porewater::has_sphere_attributes(atom)) error->all(FLERR, "Fix shear/stress requires atom_style sphere");
   if (domain->dimension != 3) error->all(FLERR, "Fix shear/stress requires a 3d simulation");
 
   vector_flag = 1;

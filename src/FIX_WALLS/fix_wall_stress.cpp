@@ -13,6 +13,7 @@
 #include "input/restart_state.h"
 #include "walls/wall_contact.h"
 
+#include "lammps_compat.h"
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
@@ -48,7 +49,7 @@ FixWallStress::FixWallStress(LAMMPS *lmp, int narg, char **arg) :
   z_wall = settings.z;
   z_auto = settings.z_auto ? 1 : 0;
   stress = porewater::EqualValue(settings.stress);
-  if (!atom->sphere_flag) error->all(FLERR, "Fix wall/stress requires atom_style sphere");
+  if (!porewater::has_sphere_attributes(atom)) error->all(FLERR, "Fix wall/stress requires atom_style sphere");
   if (domain->dimension != 3) error->all(FLERR, "Fix wall/stress requires a 3d simulation");
   if (domain->zperiodic)
     error->all(FLERR, "Fix wall/stress needs a z-bounded box: boundary f, fm or fs in z, not p");

@@ -5,6 +5,7 @@
 #include "pair_linear_coulomb.h"
 
 #include "contact/contact_sweep.h"
+#include "lammps_compat.h"
 #include "lammps_input.h"
 
 #include "atom.h"
@@ -272,7 +273,7 @@ void PairLinearCoulomb::coeff(int narg, char **arg)
 
 void PairLinearCoulomb::init_style()
 {
-  if (!atom->sphere_flag)
+  if (!porewater::has_sphere_attributes(atom))
     error->all(FLERR, "Pair linear/coulomb requires atom_style sphere (radius, rmass, omega, torque)");
   PairGranHookeHistory::init_style();
   uniform_coeffs = -1;    // decided at the first compute(), after init_one() mixed them

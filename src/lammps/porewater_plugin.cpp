@@ -3,6 +3,7 @@
 // every style.
 
 #include "lammpsplugin.h"
+#include "library.h"
 #include "version.h"
 
 #include "fix.h"
@@ -30,6 +31,7 @@ template <class> class PairLinearCoulombKokkos;
 }    // namespace LAMMPS_NS
 #endif
 
+#include <cstdio>
 #include <list>
 #include <string>
 
@@ -116,6 +118,18 @@ struct Registrar {
 
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
 {
+  // A plugin built against another LAMMPS' headers would crash at its first access to a
+  // class that changed: register nothing and say so, through the C API only.
+  const int running = lammps_version(lmp);
+  if (running != PW_LAMMPS_VERSION_NUMBER) {
+    const std::string message = "porewater.so was built for LAMMPS version " +
+        std::to_string(PW_LAMMPS_VERSION_NUMBER) + ", this LAMMPS is " +
+        std::to_string(running) + ": no styles registered; rebuild the plugin against this "
+        "LAMMPS (README, \"Building the plugin yourself\")";
+    std::fprintf(stderr, "ERROR: %s\n", message.c_str());
+    lammps_command(lmp, ("print \"ERROR: " + message + "\"").c_str());
+    return;
+  }
   Registrar r{lmp, (lammpsplugin_regfunc) regfunc, handle};
   r.add_pair<PairLinearCoulomb, PairLinearCoulombKokkos>(
       "linear/coulomb", "linear spring + Coulomb friction contacts, no damping");

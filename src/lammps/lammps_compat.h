@@ -1,0 +1,20 @@
+// What differs between the LAMMPS versions the plugin builds against (29Sep2021 and
+// 4Feb2025), in one place: each entry works on both, says what it bridges and why.
+#ifndef PW_LAMMPS_COMPAT_H
+#define PW_LAMMPS_COMPAT_H
+
+#include "lammps_compat.h"
+#include "atom.h"
+
+namespace porewater {
+
+// atom_style sphere (radius, rmass, omega, torque): Atom::sphere_flag is gone since 2023,
+// when other atom styles (bpm/sphere, ...) began to carry the same per-atom fields
+inline bool has_sphere_attributes(const LAMMPS_NS::Atom *atom)
+{
+  return atom->radius_flag && atom->rmass_flag && atom->omega_flag && atom->torque_flag;
+}
+
+}    // namespace porewater
+
+#endif
