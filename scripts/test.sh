@@ -1,23 +1,32 @@
 #!/usr/bin/env bash
-# The test command: set up (packages, LAMMPS, plugin, LIGGGHTS launcher), compile-check the
-# KOKKOS sources for CUDA, then run every test with ctest. PW_HOSTS (default
-# "lammps liggghts") selects the host layers, as for setup.sh.
+# The test command: set up every host (packages; LAMMPS 29Sep2021 and 4Feb2025 with the
+# plugin for each; Debian's LIGGGHTS with our launcher), compile-check the KOKKOS sources for
+# CUDA, then run the tests with ctest on each host. PW_HOSTS (default "lammps liggghts") and
+# PW_LAMMPS (default both) narrow it, as for setup.sh.
 set -euo pipefail
 REPO=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-start=$(date +%s)
+export PW_LAMMPS=${PW_LAMMPS:-both}
 export PW_HOSTS=${PW_HOSTS:-lammps liggghts}
-hosts=" ${PW_HOSTS//;/ } "
-[ "${PW_LIGGGHTS:-0}" = 1 ] && hosts="$hosts liggghts "
+# shellcheck source=scripts/versions.sh
+source "$REPO/scripts/versions.sh"
+layers=" ${PW_HOSTS//;/ } "
+[ "${PW_LIGGGHTS:-0}" = 1 ] && layers="$layers liggghts "
+start=$(date +%s)
 bash "$REPO/scripts/setup.sh"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-if [[ $hosts == *" lammps "* ]]; then
-  bash "$REPO/scripts/cuda_check.sh"
-  (cd "$REPO/build" && ctest --output-on-failure -j "${PW_TEST_JOBS:-2}" --timeout 900)
+if [[ $layers == *" lammps "* ]]; then
+  for host in $(pw_hosts); do
+    pw_select_host "$host"
+    [ "$host" = 2021 ] && bash "$REPO/scripts/cuda_check.sh"
+    echo "== ctest on LAMMPS $host ($REPO/$PW_BUILD_NAME)"
+    (cd "$REPO/$PW_BUILD_NAME" && ctest --output-on-failure -j "${PW_TEST_JOBS:-2}" --timeout 900)
+  done
 fi
-if [[ $hosts == *" liggghts "* ]]; then
-  # the unit tests ran in build/ already when the LAMMPS host was tested
-  only=(); [[ $hosts == *" lammps "* ]] && only=(-L liggghts)
+if [[ $layers == *" liggghts "* ]]; then
+  # the unit tests ran already where a LAMMPS host was tested
+  only=(); [[ $layers == *" lammps "* ]] && only=(-L liggghts)
   cmake --build "$REPO/build-liggghts" -j "${PW_JOBS:-$(nproc)}"
+  echo "== ctest on LIGGGHTS ($REPO/build-liggghts)"
   (cd "$REPO/build-liggghts" && ctest "${only[@]}" --output-on-failure -j "${PW_TEST_JOBS:-2}" --timeout 900)
 fi
 echo "test command took $(( $(date +%s) - start )) s"
