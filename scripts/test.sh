@@ -14,6 +14,12 @@ layers=" ${PW_HOSTS//;/ } "
 start=$(date +%s)
 bash "$REPO/scripts/setup.sh"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+# the core alone, as on a machine without any host (PW_HOSTS=none): it builds and its tests pass
+echo "== the core without a host ($REPO/build-core)"
+cmake -S "$REPO" -B "$REPO/build-core" -G Ninja -D CMAKE_BUILD_TYPE=Release \
+  -D CMAKE_CXX_COMPILER_LAUNCHER=ccache -D PW_HOSTS=none >/dev/null
+cmake --build "$REPO/build-core" -j "${PW_JOBS:-$(nproc)}"
+(cd "$REPO/build-core" && ctest --output-on-failure -j "${PW_TEST_JOBS:-2}" --timeout 900)
 if [[ $layers == *" lammps "* ]]; then
   for host in $(pw_hosts); do
     pw_select_host "$host"
