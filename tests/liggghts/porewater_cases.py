@@ -241,7 +241,7 @@ def wall_stack(launch):
     """The wall on a 3 x 3 x 4 stack of touching grains (LIGGGHTS hooke/stiffness contacts,
     frictionless, kn = 1e4): at rest it carries S and sits 4 S/kn lower."""
     tables, _ = launch.run("in.wall_stack")
-    first, last = tables[0][-1], tables[-1][-1]
+    first, last = tables[0][-1], tables[1][-1]
     close(first["w[1]"], 4.0, 1e-15, "z auto: on the highest grain's top")
     stress, kn = 10.0, 1.0e4
     delta = stress / kn
@@ -251,6 +251,17 @@ def wall_stack(launch):
     close(last["w[1]"], 4.0 - 4.0 * delta, 1e-9, "4 springs in series under S")
     close(last["w[2]"], 0.0, 1e-9, "the wall at rest")
     close(last["w"], 9 * 0.5 * kn * delta * delta, 1e-9, "spring energy of the 9 contacts")
+    # fix_modify w virial yes: the fixes' zz pressure is sum (z_i - z_w) f_z,i over the
+    # grains touching the wall, over the volume 3 x 3 x 8 (nktv2p = 1 in SI); none without
+    with_wall, without_wall = tables[2][-1]["press[3]"], tables[3][-1]["press[3]"]
+    close(without_wall, 0.0, 0.0, "no fix virial with virial no")
+    expected = 0.0
+    for x, y, z in read_rows(launch.path("stack.txt")).values():
+        overlap = z + 0.5 - last["w[1]"]
+        if overlap > 0.0:
+            expected += (z - last["w[1]"]) * (-kn * overlap)
+    expect(expected > 0.0, "no grain under the wall")
+    close((with_wall - without_wall) * 72.0, expected, 1e-9 * expected, "the wall's virial")
 
 
 def shear_free(launch):
