@@ -106,6 +106,25 @@ def darcy_fluidise(launch):
            f"{free_rise:.4g} m)")
 
 
+def darcy_mesh_floor(launch):
+    """LIGGGHTS' own model (pair and wall gran model hertz, damped) and a mesh wall with the
+    fix: grains dropped onto a mesh floor in still water come to rest carrying their buoyant
+    weight on the floor, and the fluid pushes them up with rho_f V g."""
+    tables, _ = launch.run("in.darcy_mesh_floor", log_name="log.mesh_floor")
+    last = tables[-1][-1]
+    volume = 4.0 / 3.0 * math.pi * 0.005**3
+    weight, buoyancy = 36 * 2500.0 * volume * 9.81, 36 * 1000.0 * volume * 9.81
+    # at rest (kinetic energy below 1e-20 J; measured 5e-30) the pore pressure has drained
+    # to 1e-10 Pa: -V grad p is 1e-14 of the buoyancy, and the floor (fix
+    # mesh/surface/stress, the force on the mesh: down) carries the rest of the weight
+    # (measured to 2e-13)
+    expect(last["KinEng"] < 1e-20, f"not at rest: {last['KinEng']} J")
+    close(last["fluid"], buoyancy, 1e-9 * buoyancy, "fluid force on the grains (buoyancy)")
+    close(-last["floor[3]"], weight - buoyancy, 1e-9 * weight, "force on the mesh floor")
+    expect(abs(last["fl[3]"]) < 1e-6, f"pressure {last['fl[3]']} Pa left at rest")
+    expect(last["zmin"] > 0.005 - 1e-4, "a grain sank into the mesh floor")
+
+
 def darcy_undrained(launch):
     """Closed, impermeable box compacted by grains under fix move: each cell's pressure
     follows its porosity, beta phi dp = -dphi/(1 - phi)."""
@@ -332,6 +351,7 @@ CASES = {
     "darcy_column": darcy_column,
     "darcy_grain": darcy_grain,
     "darcy_fluidise": darcy_fluidise,
+    "darcy_mesh_floor": darcy_mesh_floor,
     "darcy_undrained": darcy_undrained,
     "darcy_restart": darcy_restart,
     "darcy_bad_input": darcy_bad_input,
