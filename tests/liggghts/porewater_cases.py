@@ -249,6 +249,10 @@ def wall_free(launch):
     # S = c t (ramp, c = 2) from z0 9 for T = 2: velocity Verlet's velocity is exact, its
     # position lags the cubic by k T dt^2/6 exactly: z = z0 - k (T^3 - T dt^2)/6, k = c A/M.
     # S evaluated one step late would move z by O(k T^2 dt) = 1e-2
+    # the restart file after the third run holds the wall: the continuation repeats runs 4-6
+    continued, _ = launch.run("in.wall_restart")
+    expect(continued == tables[3:6], "the wall continued from the restart file differs:\n"
+           f"{continued[-1][-1]}\n{tables[5][-1]}")
     r = tables[6][-1]
     k, dt, big_t = 2.0, 0.01, 2.0
     close(r["r[1]"], 9.0 - k * (big_t**3 - big_t * dt * dt) / 6.0, 1e-12, "ramped wall z")
