@@ -19,8 +19,6 @@
 #include "neighbor.h"
 #include "update.h"
 
-#include <algorithm>
-#include <cmath>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -30,23 +28,17 @@ using namespace FixConst;
 FixDarcyPressure::FixDarcyPressure(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), fluid_force(nullptr), maxatom(0)
 {
-  if (!porewater::has_sphere_attributes(atom)) error->all(FLERR, "fix darcy/pressure requires atom_style sphere");
-  if (domain->triclinic) error->all(FLERR, "fix darcy/pressure requires an orthogonal box");
-  if (!domain->xperiodic || !domain->yperiodic || domain->zperiodic)
-    error->all(FLERR, "fix darcy/pressure requires boundaries periodic in x and y and "
-               "non-periodic in z (the fluid has a bottom and a top)");
-  const double zlo = domain->boxlo[2], zhi = domain->boxhi[2];
+  const porewater::HostBox box = host_box();
+  porewater::or_stop(lmp, [&] {
+    porewater::check_darcy_host(porewater::has_sphere_attributes(atom), box);
+    return 0;
+  });
   const porewater::DarcySettings s = porewater::parse_or_stop(
       lmp, "fix darcy/pressure", narg - 3, arg + 3,
-      [zlo, zhi](porewater::KeywordReader &in) { return porewater::parse_darcy(in, zlo, zhi); });
+      [&box](porewater::KeywordReader &in) { return porewater::parse_darcy(in, box.lo[2], box.hi[2]); });
   top = porewater::EqualValue(s.top);
   z_top = porewater::EqualValue(s.z_top);
   bottom = porewater::EqualValue(s.bottom);
-
-  // the grid spans the box in x and y and [box bottom, zhi] in z
-  const porewater::GridGeom geom{domain->boxlo[0], domain->boxlo[1], zlo,
-                                 domain->prd[0] / s.grid[0], domain->prd[1] / s.grid[1],
-                                 (s.zhi - zlo) / s.grid[2], s.grid[0], s.grid[1], s.grid[2]};
   // every rank holds the whole grid: the ranks sharing this node's memory hold as many copies
   MPI_Comm node;
   MPI_Comm_split_type(world, MPI_COMM_TYPE_SHARED, comm->me, MPI_INFO_NULL, &node);
@@ -55,18 +47,9 @@ FixDarcyPressure::FixDarcyPressure(LAMMPS *lmp, int narg, char **arg) :
   MPI_Comm_free(&node);
   fluid = porewater::or_stop(lmp, [&] {
     return std::unique_ptr<porewater::DarcyFluid>(
-        new porewater::DarcyFluid(s, geom, id, ranks_on_node));
+        new porewater::DarcyFluid(s, porewater::darcy_grid_geom(s, box), id, ranks_on_node));
   });
-
-  if (comm->me == 0) {
-    utils::logmesg(lmp, "fix darcy/pressure {}: {}x{}x{} cells of {:.6g} x {:.6g} x {:.6g}, "
-                   "z from {:.6g} to {:.6g}, fluid step every {} step(s)\n", id, s.grid[0],
-                   s.grid[1], s.grid[2], geom.dx, geom.dy, geom.dz, geom.zlo,
-                   fluid->z_grid_top(), s.every);
-    if (!s.gravity_given)
-      utils::logmesg(lmp, "fix darcy/pressure {}: no gravity keyword: no buoyancy force "
-                     "(rho_f V g) on the grains\n", id);
-  }
+  if (comm->me == 0) utils::logmesg(lmp, fluid->summary());
 
   vector_flag = 1;
   size_vector = porewater::DarcyFluid::VECTOR_SIZE;
@@ -96,22 +79,25 @@ void FixDarcyPressure::init()
 {
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "fix darcy/pressure does not support run_style respa");
-  top.resolve(lmp, "fix darcy/pressure", "top");
-  z_top.resolve(lmp, "fix darcy/pressure", "ztop");
-  bottom.resolve(lmp, "fix darcy/pressure", "bottom");
+  porewater::LammpsVariables variables(lmp);
+  top.resolve(variables, "fix darcy/pressure", "top");
+  z_top.resolve(variables, "fix darcy/pressure", "ztop");
+  bottom.resolve(variables, "fix darcy/pressure", "bottom");
   // the grid was laid over the box when the fix was defined and cannot follow it
   for (int i = 0; i < modify->nfix; ++i)
     if (modify->fix[i]->box_change & (BOX_CHANGE_X | BOX_CHANGE_Y | BOX_CHANGE_SHAPE))
       error->all(FLERR, "fix darcy/pressure cannot be used with fix {}, which changes the box "
                  "in x or y", modify->fix[i]->id);
-  const porewater::GridGeom &geom = fluid->grid().geom;
-  const double slack = 1e-12;
-  if (std::fabs(domain->boxlo[0] - geom.xlo) > slack * domain->prd[0] ||
-      std::fabs(domain->prd[0] - geom.nx * geom.dx) > slack * domain->prd[0] ||
-      std::fabs(domain->boxlo[1] - geom.ylo) > slack * domain->prd[1] ||
-      std::fabs(domain->prd[1] - geom.ny * geom.dy) > slack * domain->prd[1])
-    error->all(FLERR, "fix darcy/pressure: the box changed in x or y since the fix was "
-               "defined; the fluid grid cannot follow it");
+  const std::string mismatch = fluid->box_mismatch(host_box());
+  if (!mismatch.empty()) error->all(FLERR, mismatch);
+}
+
+porewater::HostBox FixDarcyPressure::host_box() const
+{
+  return porewater::HostBox{{domain->boxlo[0], domain->boxlo[1], domain->boxlo[2]},
+                            {domain->boxhi[0], domain->boxhi[1], domain->boxhi[2]},
+                            {domain->xperiodic != 0, domain->yperiodic != 0, domain->zperiodic != 0},
+                            domain->triclinic != 0};
 }
 
 porewater::GrainStep FixDarcyPressure::now() const
@@ -134,8 +120,7 @@ void FixDarcyPressure::post_force(int /*vflag*/)
 porewater::GrainBackend &FixDarcyPressure::grains()
 {
   if (atom->nmax > maxatom) grow_fluid_force(atom->nmax);
-  cpu_grains.bind(porewater::CouplingArrays{atom->x, atom->v, atom->f, atom->radius, atom->mask,
-                                            atom->nlocal, groupbit, fluid_force});
+  cpu_grains.bind(porewater::coupling_arrays_of(atom, groupbit, fluid_force));
   return cpu_grains;
 }
 
@@ -164,8 +149,9 @@ porewater::BoundaryValues FixDarcyPressure::boundary_values()
 {
   if (top.is_variable() || z_top.is_variable() || bottom.is_variable()) sync_for_variables();
   const bigint next = update->ntimestep + fluid->settings().every;
-  return porewater::BoundaryValues{top.evaluate(lmp, next), z_top.evaluate(lmp, next),
-                                   bottom.evaluate(lmp, next)};
+  porewater::LammpsVariables variables(lmp);
+  return porewater::BoundaryValues{top.evaluate(variables, next), z_top.evaluate(variables, next),
+                                   bottom.evaluate(variables, next)};
 }
 
 bool FixDarcyPressure::grains_reordered_since(long long step)
@@ -177,15 +163,10 @@ bool FixDarcyPressure::grains_reordered_since(long long step)
 long long FixDarcyPressure::first_nonfinite_grain()
 {
   sync_for_nonfinite_check();
-  double **x = atom->x, **v = atom->v;
-  tagint first = MAXTAGINT, first_all = MAXTAGINT;
-  for (int i = 0; i < atom->nlocal; ++i) {
-    bool finite = true;
-    for (int d = 0; d < 3; ++d) finite = finite && std::isfinite(x[i][d]) && std::isfinite(v[i][d]);
-    if ((atom->mask[i] & groupbit) && !finite) first = std::min(first, atom->tag[i]);
-  }
-  MPI_Allreduce(&first, &first_all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  return first_all;
+  long long first = porewater::first_nonfinite_tag(
+      porewater::coupling_arrays_of(atom, groupbit, fluid_force), atom->tag);
+  MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_LONG_LONG, MPI_MIN, world);
+  return first;
 }
 
 std::string FixDarcyPressure::group_name() const

@@ -58,6 +58,7 @@ class FixDarcyPressure : public Fix, protected porewater::FluidHost {
 
  private:
   porewater::GrainStep now() const;
+  porewater::HostBox host_box() const;
   porewater::SerialGrains cpu_grains;
 };
 

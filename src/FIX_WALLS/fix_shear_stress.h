@@ -1,7 +1,8 @@
 /* -*- c++ -*- ----------------------------------------------------------
    fix shear/stress: the top layer of the shear experiment (doc/model.md §4) moves in x as one
    rigid plate of mass M driven by a shear stress τ; y-motion and rotation locked, vertical
-   motion left to each grain.
+   motion left to each grain. The plate is the core's porewater::RigidPlate; this class
+   adapts LAMMPS to it.
 ------------------------------------------------------------------------- */
 
 #ifndef PW_FIX_SHEAR_STRESS_H
@@ -9,14 +10,16 @@
 
 #include "fix.h"
 
-#include "input/settings.h"
-#include "walls/shear_plate.h"
+#include "walls/rigid_plate.h"
+
+#include <memory>
 
 namespace LAMMPS_NS {
 
-class FixShearStress : public Fix {
+class FixShearStress : public Fix, protected porewater::RigidPlateHost {
  public:
   FixShearStress(class LAMMPS *, int, char **);
+  ~FixShearStress() override;
   int setmask() override;
   void init() override;
   void setup(int) override;
@@ -26,21 +29,24 @@ class FixShearStress : public Fix {
   void restart(char *) override;
 
  protected:
-  porewater::ShearStressSettings settings;
-  double plate_displacement;    // mass-weighted mean unwrapped x of the group − reference_x
-  double reference_x;           // that mean where the displacement was zero
-  double resisting_stress;      // −ΣF_x/(L_x L_y), ΣF_x before the plate's own force
-
-  double area() const;
-  double plate_velocity();    // mass-weighted mean v_x of the group (a reduction)
-  void check_runaway(double step_displacement);
+  std::unique_ptr<porewater::RigidPlate> plate;
 
   porewater::ImageUnwrap image_unwrap() const;
-  // the core's plate kernels over the local grains; the KOKKOS variant runs them as kernels
-  virtual void plate_sums(double *sums);                  // {ΣF_x, Σ m x_unwrapped, Σ m}
-  virtual void momentum_sums(double *sums);               // {Σ m v_x, Σ m}
-  virtual void move_as_plate(double force_per_mass);      // f_x = m a; y and rotation locked
-  virtual void set_velocity_x(double velocity);
+  porewater::PlateStep now() const;
+  // the core's plate kernels over the local grains (CPU)
+  porewater::SerialPlateGrains<porewater::HostGrains<imageint>> plate_grains() const;
+
+  // porewater::RigidPlateHost; the KOKKOS variant runs the plate kernels as Kokkos kernels
+  void plate_sums(double *sums) override;
+  void momentum_sums(double *sums) override;
+  void move_as_plate(double force_per_mass) override;
+  void set_velocity_x(double velocity) override;
+  void sum_over_ranks(double *values, int n) override;
+  double area() override;
+  double force_to_velocity() override;
+  double neighbor_skin() override;
+  std::string group_name() const override;
+  void stop(const std::string &message) override;
 };
 
 }    // namespace LAMMPS_NS

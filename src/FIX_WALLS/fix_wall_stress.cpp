@@ -1,17 +1,13 @@
 /* ----------------------------------------------------------------------
    fix wall/stress (see doc/fix_wall_stress.rst)
 
-   The wall moves by velocity Verlet in step with the grains:
-     initial_integrate  v_w += ½Δt F_w/M,  z_w += Δt v_w
-     post_force         grain–wall contacts at the new z_w; F_w = Σ contact forces − S(t)·L_x·L_y
-     final_integrate    v_w += ½Δt F_w/M
+   The wall moves by velocity Verlet in step with the grains (walls/stress_wall.h); this
+   fix forwards LAMMPS' integrate and force hooks to it.
 ------------------------------------------------------------------------- */
 
 #include "fix_wall_stress.h"
 
 #include "grains/host_grains.h"
-#include "input/restart_state.h"
-#include "walls/wall_contact.h"
 
 #include "lammps_compat.h"
 #include "atom.h"
@@ -19,15 +15,7 @@
 #include "domain.h"
 #include "error.h"
 #include "group.h"
-#include "input.h"
-#include "modify.h"
 #include "update.h"
-#include "variable.h"
-
-#include <algorithm>
-#include <cmath>
-#include <cstring>
-#include <limits>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -40,14 +28,11 @@ enum { BOUNDARY_SHRINK = 2 };    // Domain::boundary value of `s`
    fix ID group wall/stress z Z0|auto stress S|v_name mass M kn KN [damping GAMMA]
 ------------------------------------------------------------------------- */
 
-FixWallStress::FixWallStress(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), z_wall(0.0), v_wall(0.0), wall_force(0.0), grain_force(0.0),
-    applied_stress(0.0), spring_energy(0.0), z_auto(0)
+FixWallStress::FixWallStress(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
 {
-  settings = porewater::parse_or_stop(lmp, "fix wall/stress", narg - 3, arg + 3,
-                                      porewater::parse_wall_stress);
-  z_wall = settings.z;
-  z_auto = settings.z_auto ? 1 : 0;
+  const porewater::WallStressSettings settings = porewater::parse_or_stop(
+      lmp, "fix wall/stress", narg - 3, arg + 3, porewater::parse_wall_stress);
+  wall.reset(new porewater::StressWall(settings, id));
   stress = porewater::EqualValue(settings.stress);
   if (!porewater::has_sphere_attributes(atom)) error->all(FLERR, "Fix wall/stress requires atom_style sphere");
   if (domain->dimension != 3) error->all(FLERR, "Fix wall/stress requires a 3d simulation");
@@ -56,7 +41,7 @@ FixWallStress::FixWallStress(LAMMPS *lmp, int narg, char **arg) :
 
   scalar_flag = 1;
   vector_flag = 1;
-  size_vector = 4;
+  size_vector = porewater::StressWall::VECTOR_SIZE;
   global_freq = 1;
   extscalar = 1;
   extvector = 0;
@@ -76,84 +61,41 @@ void FixWallStress::init()
 {
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix wall/stress does not support run_style respa");
-  stress.resolve(lmp, "Fix wall/stress", "stress");
-  warn_if_damping_unstable();
-}
-
-// The explicit dashpot on a grain is stable only for damping·Δt/m < 2; near that bound the
-// contact chatters, so warn well before it.
-void FixWallStress::warn_if_damping_unstable()
-{
-  const double gamma = settings.damping;
-  if (gamma <= 0.0 || !atom->rmass) return;
-  double mass_min = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) mass_min = std::min(mass_min, atom->rmass[i]);
-  double mass_min_all = mass_min;
-  MPI_Allreduce(&mass_min, &mass_min_all, 1, MPI_DOUBLE, MPI_MIN, world);
-  const double ratio = gamma * update->dt / mass_min_all;
-  if (ratio > 0.5 && comm->me == 0)
-    error->warning(FLERR,
-                   "Fix wall/stress: damping {} with timestep {} and lightest grain mass {} gives "
-                   "damping*dt/m = {:.3g}; the explicit dashpot chatters above ~0.5 and is "
-                   "unstable above 2: lower damping or the timestep",
-                   gamma, update->dt, mass_min_all, ratio);
+  porewater::LammpsVariables variables(lmp);
+  stress.resolve(variables, "Fix wall/stress", "stress");
+  wall->init(*this, update->dt);
 }
 
 void FixWallStress::setup(int vflag)
 {
-  if (z_auto) {
-    double top = highest_grain_top();
-    double top_all = 0.0;
-    MPI_Allreduce(&top, &top_all, 1, MPI_DOUBLE, MPI_MAX, world);
-    if (top_all == -std::numeric_limits<double>::infinity())
-      error->all(FLERR, "Fix wall/stress: z auto needs grains in group {}", group->names[igroup]);
-    z_wall = top_all;
-    z_auto = 0;
-  }
-  post_force(vflag);
+  v_init(vflag);
+  wall->setup(*this, update->ntimestep);
 }
-
-/* ---------------------------------------------------------------------- */
 
 void FixWallStress::initial_integrate(int /*vflag*/)
 {
-  const double dt = update->dt;
-  v_wall += 0.5 * dt * wall_force / settings.mass;
-  z_wall += dt * v_wall;
+  wall->initial_integrate(update->dt);
 }
 
 void FixWallStress::post_force(int vflag)
 {
   v_init(vflag);
-  applied_stress = current_stress();
-  double local[3];
-  contact_sums(local);
-  if (evflag && vflag_global) virial[2] += local[2];
-  double sums[2];
-  MPI_Allreduce(local, sums, 2, MPI_DOUBLE, MPI_SUM, world);
-  grain_force = sums[0];
-  spring_energy = sums[1];
-  wall_force = grain_force - applied_stress * area();
-  check_wall_in_box();
+  wall->post_force(*this, update->ntimestep);
 }
 
 void FixWallStress::final_integrate()
 {
-  v_wall += 0.5 * update->dt * wall_force / settings.mass;
+  wall->final_integrate(update->dt);
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   what the wall needs from LAMMPS
+------------------------------------------------------------------------- */
 
-double FixWallStress::highest_grain_top()
+double FixWallStress::stress_now()
 {
-  double **x = atom->x;
-  const double *radius = atom->radius;
-  const int *mask = atom->mask;
-  double top = -std::numeric_limits<double>::infinity();
-  for (int i = 0; i < atom->nlocal; i++)
-    if (mask[i] & groupbit) top = std::max(top, x[i][2] + radius[i]);
-  return top;
+  porewater::LammpsVariables variables(lmp);
+  return stress.evaluate(variables, update->ntimestep + 1);
 }
 
 namespace {
@@ -167,100 +109,95 @@ struct PerAtomVirialZZ {
 };
 }    // namespace
 
+void FixWallStress::grain_contacts(double *sums)
+{
+  porewater::sum_over_grains(
+      atom->nlocal,
+      wall->contacts(porewater::grains_of_atom(atom),
+                     PerAtomVirialZZ{evflag && vflag_atom ? vatom : nullptr}, groupbit),
+      sums);
+}
+
 void FixWallStress::contact_sums(double *sums)
 {
-  const porewater::HostGrains<imageint> grains{atom->x,      atom->v,      atom->f,
-                                               atom->omega,  atom->torque, atom->radius,
-                                               atom->rmass,  atom->mask,   atom->image};
-  const porewater::WallContacts<porewater::HostGrains<imageint>, PerAtomVirialZZ> contacts{
-      grains,         PerAtomVirialZZ{evflag && vflag_atom ? vatom : nullptr},
-      groupbit,       z_wall,
-      v_wall,         settings.kn,
-      settings.damping};
-  porewater::sum_over_grains(atom->nlocal, contacts, sums);
+  grain_contacts(sums);
+  if (evflag && vflag_global) virial[2] += sums[2];
 }
 
-double FixWallStress::area() const
+void FixWallStress::sum_over_ranks(double *values, int n)
 {
-  return domain->xprd * domain->yprd;
+  MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_SUM, world);
 }
 
-double FixWallStress::current_stress()
+double FixWallStress::max_over_ranks(double value)
 {
-  return stress.evaluate(lmp, update->ntimestep + 1);
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, world);
+  return value;
 }
 
-// every rank holds the same wall, so every rank reaches the same verdict
-void FixWallStress::check_wall_in_box()
+double FixWallStress::min_over_ranks(double value)
 {
-  if (!std::isfinite(z_wall) || !std::isfinite(v_wall))
-    error->all(FLERR, "Fix wall/stress {}: the wall ran away at step {}: z = {}, v = {}", id,
-               update->ntimestep, z_wall, v_wall);
-  const double bottom = domain->boxlo[2];
-  if (z_wall < bottom)
-    error->all(FLERR,
-               "Fix wall/stress {}: the wall fell to z = {} at step {}, below the box "
-               "bottom {} and so through every grain",
-               id, z_wall, update->ntimestep, bottom);
-  // a shrink-wrapped top follows the grains: allow a gap as high as the box itself
-  const double top = domain->boundary[2][1] == BOUNDARY_SHRINK ? domain->boxhi[2] + domain->zprd
-                                                               : domain->boxhi[2];
-  if (z_wall > top)
-    error->all(FLERR,
-               "Fix wall/stress {}: the wall rose to z = {} at step {}, above the box top {}", id,
-               z_wall, update->ntimestep, top);
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MIN, world);
+  return value;
+}
+
+double FixWallStress::highest_grain_top()
+{
+  return porewater::highest_grain_top(porewater::grains_of_atom(atom), atom->nlocal, groupbit);
+}
+
+double FixWallStress::lightest_grain()
+{
+  return porewater::lightest_grain(porewater::grains_of_atom(atom), atom->nlocal, groupbit);
+}
+
+porewater::WallBox FixWallStress::box()
+{
+  return porewater::WallBox{domain->boxlo[2], domain->boxhi[2],
+                            domain->boundary[2][1] == BOUNDARY_SHRINK, domain->xprd * domain->yprd};
+}
+
+std::string FixWallStress::group_name() const
+{
+  return group->names[igroup];
+}
+
+void FixWallStress::stop(const std::string &message)
+{
+  error->all(FLERR, message);
+}
+
+void FixWallStress::warn(const std::string &message)
+{
+  if (comm->me == 0) error->warning(FLERR, message);
 }
 
 /* ----------------------------------------------------------------------
-   vector: 1 z_wall, 2 v_wall, 3 grain force per area (effective normal stress), 4 applied S
+   outputs and restart
 ------------------------------------------------------------------------- */
 
 double FixWallStress::compute_scalar()
 {
-  return spring_energy;
+  return wall->scalar();
 }
 
 double FixWallStress::compute_vector(int n)
 {
-  switch (n) {
-    case 0:
-      return z_wall;
-    case 1:
-      return v_wall;
-    case 2:
-      return grain_force / area();
-    default:
-      return applied_stress;
-  }
+  return wall->vector(n, domain->xprd * domain->yprd);
 }
 
 void *FixWallStress::extract(const char *name, int &dim)
 {
   dim = 0;
-  if (strcmp(name, "z_wall") == 0) return &z_wall;
-  if (strcmp(name, "v_wall") == 0) return &v_wall;
-  return nullptr;
-}
-
-/* ----------------------------------------------------------------------
-   restart: the wall's position, velocity, last force and whether `auto` is still pending
-------------------------------------------------------------------------- */
-
-namespace {
-const porewater::RestartFormat RESTART{porewater::RestartStyle::WallStress, 1, "fix wall/stress"};
+  return wall->extract(name);
 }
 
 void FixWallStress::write_restart(FILE *fp)
 {
-  porewater::write_restart_state(lmp, fp, RESTART, {z_wall, v_wall, wall_force, (double) z_auto});
+  porewater::write_restart_state(lmp, fp, porewater::StressWall::RESTART, wall->restart_state());
 }
 
 void FixWallStress::restart(char *buf)
 {
-  const std::vector<double> state =
-      porewater::read_restart_state(lmp, RESTART, buf, 4);
-  z_wall = state[0];
-  v_wall = state[1];
-  wall_force = state[2];
-  z_auto = (int) state[3];
+  wall->restore(porewater::read_restart_state(lmp, porewater::StressWall::RESTART, buf, 4));
 }

@@ -1,7 +1,8 @@
 /* -*- c++ -*- ----------------------------------------------------------
    fix wall/stress: the stress-controlled top wall of the shear experiment (doc/model.md §4), a
    frictionless horizontal plane of mass M that moves in z under the grains' contact forces
-   and an applied normal stress S(t).
+   and an applied normal stress S(t). The wall is the core's porewater::StressWall; this
+   class adapts LAMMPS to it: atoms, input, variables, MPI, virial, errors, restart.
 ------------------------------------------------------------------------- */
 
 #ifndef PW_FIX_WALL_STRESS_H
@@ -9,12 +10,14 @@
 
 #include "fix.h"
 
-#include "input/settings.h"
 #include "lammps_input.h"
+#include "walls/stress_wall.h"
+
+#include <memory>
 
 namespace LAMMPS_NS {
 
-class FixWallStress : public Fix {
+class FixWallStress : public Fix, protected porewater::StressWallHost {
  public:
   FixWallStress(class LAMMPS *, int, char **);
   ~FixWallStress() override;
@@ -31,26 +34,26 @@ class FixWallStress : public Fix {
   void *extract(const char *, int &) override;
 
  protected:
-  void warn_if_damping_unstable();
-  // the wall, the same on every rank
-  double z_wall, v_wall;
-  double wall_force;        // on the wall at the last force evaluation: grain_force − S·L_x·L_y
-  double grain_force;       // sum of the grains' contact forces on the wall (≥ 0)
-  double applied_stress;    // S at the last force evaluation
-  double spring_energy;     // ½ k_n δ² summed over the grain–wall contacts
-  int z_auto;               // 1 until `z auto` has put the wall on the highest grain
+  std::unique_ptr<porewater::StressWall> wall;    // the same on every rank
+  porewater::EqualValue stress;                    // S(t)
 
-  porewater::WallStressSettings settings;
-  porewater::EqualValue stress;    // S(t)
+  // the grain-wall contacts of the local grains (StressWall::contacts): forces added to
+  // the grains, sums = {force on the wall, spring energy, zz virial}; the KOKKOS variant
+  // runs them as a kernel
+  virtual void grain_contacts(double *sums);
 
-  double area() const;
-  double current_stress();
-  void check_wall_in_box();
-
-  double highest_grain_top();    // max z + r over the local grains (host data)
-  // the grain-wall contacts of the local grains: forces added to the grains, sums =
-  // {force on the wall, spring energy, zz virial}; the KOKKOS variant runs them as a kernel
-  virtual void contact_sums(double *sums);
+  // porewater::StressWallHost
+  double stress_now() override;
+  void contact_sums(double *sums) final;
+  void sum_over_ranks(double *values, int n) override;
+  double max_over_ranks(double value) override;
+  double min_over_ranks(double value) override;
+  double highest_grain_top() override;
+  double lightest_grain() override;
+  porewater::WallBox box() override;
+  std::string group_name() const override;
+  void stop(const std::string &message) override;
+  void warn(const std::string &message) override;
 };
 
 }    // namespace LAMMPS_NS

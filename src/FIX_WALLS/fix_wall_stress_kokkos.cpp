@@ -33,22 +33,17 @@ FixWallStressKokkos<DeviceType>::FixWallStressKokkos(LAMMPS *lmp, int narg, char
 // `z auto` reads the grains once, at the first setup, on the host
 template <class DeviceType> void FixWallStressKokkos<DeviceType>::setup(int vflag)
 {
-  if (z_auto) atomKK->sync(Host, X_MASK | RADIUS_MASK | MASK_MASK);
+  if (wall->placement_pending()) atomKK->sync(Host, X_MASK | RADIUS_MASK | MASK_MASK);
   FixWallStress::setup(vflag);
 }
 
-template <class DeviceType> void FixWallStressKokkos<DeviceType>::contact_sums(double *sums)
+template <class DeviceType> void FixWallStressKokkos<DeviceType>::grain_contacts(double *sums)
 {
   atomKK->sync(execution_space, X_MASK | V_MASK | F_MASK | RADIUS_MASK | MASK_MASK);
-  const porewater::WallContacts<porewater::KokkosGrains<DeviceType>, NoPerAtomVirial> contacts{
-      porewater::KokkosGrains<DeviceType>(atomKK),
-      NoPerAtomVirial(),
-      groupbit,
-      z_wall,
-      v_wall,
-      settings.kn,
-      settings.damping};
-  porewater::kokkos_sum_over_grains<DeviceType>(atom->nlocal, contacts, sums);
+  porewater::kokkos_sum_over_grains<DeviceType>(
+      atom->nlocal,
+      wall->contacts(porewater::KokkosGrains<DeviceType>(atomKK), NoPerAtomVirial(), groupbit),
+      sums);
   atomKK->modified(execution_space, F_MASK);
 }
 

@@ -18,7 +18,7 @@ template <class DeviceType> class FixWallStressKokkos : public FixWallStress {
   void setup(int) override;
 
  protected:
-  void contact_sums(double *sums) override;
+  void grain_contacts(double *sums) override;
 };
 
 }    // namespace LAMMPS_NS

@@ -1,14 +1,23 @@
 #!/usr/bin/env bash
 # A short in.tidal_shear run from the shipped consolidated state: it completes and its
-# time series is finite and physically bounded.  Usage: check_tidal_shear.sh LMP PLUGIN_DIR
+# time series is finite and physically bounded.
+#   check_tidal_shear.sh LMP PLUGIN_DIR          examples/tidal_shear in LAMMPS
+#   check_tidal_shear.sh --liggghts LIGGGHTS     examples/tidal_shear_liggghts
 set -euo pipefail
-LMP=$1; PLUGIN_DIR=$2
-EXAMPLE=$(cd "$(dirname "$0")/../../examples/tidal_shear" && pwd)
+EXAMPLES=$(cd "$(dirname "$0")/../../examples" && pwd)
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
-cp "$EXAMPLE"/in.* "$EXAMPLE"/consolidated_0.data "$work"/
-cd "$work"
-export LD_LIBRARY_PATH="$PLUGIN_DIR:${LD_LIBRARY_PATH:-}" OMP_NUM_THREADS=1
-"$LMP" -in in.tidal_shear -var run_steps ${STEPS:-8000} -log log.lammps -screen none
+mkdir "$work/tidal_shear" "$work/tidal_shear_liggghts"
+cp "$EXAMPLES"/tidal_shear/in.* "$EXAMPLES"/tidal_shear/consolidated_0.data "$work/tidal_shear/"
+cp "$EXAMPLES"/tidal_shear_liggghts/in.* "$work/tidal_shear_liggghts/"
+if [ "$1" = --liggghts ]; then
+  cd "$work/tidal_shear_liggghts"    # it reads ../tidal_shear/in.params and the data file
+  "$2" -in in.tidal_shear -var run_steps ${STEPS:-8000} -log log.liggghts -screen /dev/null
+else
+  LMP=$1; PLUGIN_DIR=$2
+  cd "$work/tidal_shear"
+  export LD_LIBRARY_PATH="$PLUGIN_DIR:${LD_LIBRARY_PATH:-}" OMP_NUM_THREADS=1
+  "$LMP" -in in.tidal_shear -var run_steps ${STEPS:-8000} -log log.lammps -screen none
+fi
 /usr/bin/python3 - <<'PY'
 import numpy as np, sys
 names = open("timeseries.txt").readline().lstrip("# ").split()

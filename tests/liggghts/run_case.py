@@ -3,50 +3,18 @@
 
     run_case.py CASE --launcher BIN [--np N --mpiexec mpirun] --workdir DIR
 
-The inputs are in inputs/, the meshes in meshes/ (next to this file). Each case names its
-input, its -var settings and a check of the thermo table(s) of the log; the tolerances
-are explained where they are set.
+The inputs are in inputs/, the meshes in meshes/ (next to this file). The cases here run
+LIGGGHTS' own models through the launcher: each names its input, its -var settings and a
+check of the thermo table(s) of the log. The cases of the package's styles are in
+porewater_cases.py. The tolerances are explained where they are set.
 """
 import argparse
 import math
 import os
-import subprocess
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-INPUTS = os.path.join(HERE, "inputs")
-MESHES = os.path.join(HERE, "meshes")
-
-
-class CheckFailed(Exception):
-    pass
-
-
-def expect(condition, message):
-    if not condition:
-        raise CheckFailed(message)
-
-
-def close(a, b, tol, what):
-    expect(abs(a - b) <= tol, f"{what}: {a!r} vs {b!r} (tolerance {tol:g})")
-
-
-def thermo_tables(log_text):
-    """Every run's thermo table as a list of {column: value} rows."""
-    tables, header = [], None
-    for line in log_text.splitlines():
-        words = line.split()
-        if words[:1] == ["Step"]:
-            header = words
-            tables.append([])
-        elif header and words[:2] == ["Loop", "time"]:
-            header = None
-        elif header and len(words) == len(header):
-            try:
-                tables[-1].append(dict(zip(header, map(float, words))))
-            except ValueError:
-                pass    # a warning line of the same length
-    return tables
+from harness import CheckFailed, Launch, close, expect, run, run_input
+import porewater_cases
 
 
 # ---- checks -------------------------------------------------------------------------------
@@ -56,7 +24,8 @@ GRAIN_MASS = 2000 * 4 / 3 * math.pi * 0.005**3    # d = 10 mm, 2000 kg/m^3
 
 def check_addforce(tables, log):
     rows = tables[-1]
-    expect("porewater styles: fix pwtest/addforce" in log, "registered styles not reported")
+    expect("porewater styles: fix darcy/pressure, fix wall/stress, fix shear/stress, "
+           "fix pwtest/addforce" in log, "registered styles not reported")
     expect("pwtest/addforce: fix push pushes group pushed" in log, "fix init() not reached")
     expect(len(rows) == 11, f"{len(rows)} thermo rows")
     a = 2e-3 / GRAIN_MASS
@@ -157,33 +126,9 @@ CASES = {
 }
 
 
-def run(command, workdir, what, exit_codes=(0,)):
-    done = subprocess.run(command, cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                          universal_newlines=True)
-    if done.returncode not in exit_codes:
-        print(done.stdout[-6000:])
-        raise CheckFailed(f"{what} exited with {done.returncode}: {' '.join(command)}")
-    return done.stdout
-
-
-def run_input(launcher, input_name, variables, workdir):
-    """Runs inputs/INPUT_NAME; returns (thermo tables, log text)."""
-    log_name = "log." + input_name[3:]
-    command = launcher + ["-in", os.path.join(INPUTS, input_name), "-log", log_name,
-                          "-echo", "none", "-var", "inputs", INPUTS, "-var", "meshes", MESHES]
-    for name, value in variables.items():
-        command += ["-var", name, value]
-    run(command, workdir, input_name)
-    with open(os.path.join(workdir, log_name)) as f:
-        log = f.read()
-    tables = thermo_tables(log)
-    expect(tables and all(tables), f"{input_name}: no thermo output")
-    return tables, log
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("case", choices=sorted(CASES) + ["help"])
+    parser.add_argument("case", choices=sorted(CASES) + sorted(porewater_cases.CASES) + ["help"])
     parser.add_argument("--launcher", required=True)
     parser.add_argument("--np", type=int, default=1)
     parser.add_argument("--mpiexec", default="mpirun")
@@ -198,8 +143,11 @@ def main():
             # -help lists the package's styles before LIGGGHTS' own list (LIGGGHTS exits
             # with status 1 after its help text)
             out = run([args.launcher, "-help"], args.workdir, "liggghts -help", (0, 1))
-            expect("Styles added by porewater: fix pwtest/addforce" in out, "styles not listed")
+            expect("Styles added by porewater: fix darcy/pressure, fix wall/stress, "
+                   "fix shear/stress, fix pwtest/addforce" in out, "styles not listed")
             expect("Style options compiled with this executable" in out, "LIGGGHTS' help missing")
+        elif args.case in porewater_cases.CASES:
+            porewater_cases.CASES[args.case](Launch(mpi + [args.launcher], args.workdir, args.np))
         else:
             case = CASES[args.case]
             tables = run_input(mpi + [args.launcher], case["input"], case["vars"], args.workdir)

@@ -49,6 +49,29 @@ void check_grid_fits(const DarcySettings &s, int copies)
 
 }    // namespace
 
+void check_darcy_host(bool spheres, const HostBox &box)
+{
+  if (!spheres) throw InputError("fix darcy/pressure requires atom_style sphere");
+  if (box.triclinic) throw InputError("fix darcy/pressure requires an orthogonal box");
+  if (!box.periodic[0] || !box.periodic[1] || box.periodic[2])
+    throw InputError("fix darcy/pressure requires boundaries periodic in x and y and "
+                     "non-periodic in z (the fluid has a bottom and a top)");
+}
+
+GridGeom darcy_grid_geom(const DarcySettings &s, const HostBox &box)
+{
+  const double zlo = box.lo[2];
+  return GridGeom{box.lo[0],
+                  box.lo[1],
+                  zlo,
+                  (box.hi[0] - box.lo[0]) / s.grid[0],
+                  (box.hi[1] - box.lo[1]) / s.grid[1],
+                  (s.zhi - zlo) / s.grid[2],
+                  s.grid[0],
+                  s.grid[1],
+                  s.grid[2]};
+}
+
 DarcyFluid::DarcyFluid(const DarcySettings &settings, const GridGeom &geom, const std::string &id,
                        int copies) :
     settings_(settings), grid_(coupling_grid(geom)), id_(id), field_changed_(true),
@@ -88,6 +111,32 @@ double DarcyFluid::bytes_for(const GridGeom &geom)
 double DarcyFluid::bytes() const
 {
   return solver_->bytes() + sizeof(double) * (double) (sums_.capacity() + gradient_table_.capacity());
+}
+
+std::string DarcyFluid::summary() const
+{
+  const GridGeom &g = grid_.geom;
+  std::string text = "fix darcy/pressure " + id_ + ": " + std::to_string(g.nx) + "x" +
+      std::to_string(g.ny) + "x" + std::to_string(g.nz) + " cells of " + number(g.dx) + " x " +
+      number(g.dy) + " x " + number(g.dz) + ", z from " + number(g.zlo) + " to " +
+      number(z_grid_top()) + ", fluid step every " + std::to_string(settings_.every) +
+      " step(s)\n";
+  if (!settings_.gravity_given)
+    text += "fix darcy/pressure " + id_ +
+        ": no gravity keyword: no buoyancy force (rho_f V g) on the grains\n";
+  return text;
+}
+
+// the grid was laid over the box when the fix was defined and cannot follow it
+std::string DarcyFluid::box_mismatch(const HostBox &box) const
+{
+  const GridGeom &g = grid_.geom;
+  const double slack = 1e-12, lx = box.hi[0] - box.lo[0], ly = box.hi[1] - box.lo[1];
+  if (std::fabs(box.lo[0] - g.xlo) > slack * lx || std::fabs(lx - g.nx * g.dx) > slack * lx ||
+      std::fabs(box.lo[1] - g.ylo) > slack * ly || std::fabs(ly - g.ny * g.dy) > slack * ly)
+    return "fix darcy/pressure: the box changed in x or y since the fix was defined; the fluid "
+           "grid cannot follow it";
+  return "";
 }
 
 /* ---------------------------------------------------------------------- the hooks */

@@ -32,6 +32,19 @@ struct GrainStep {
   double dt;      // grain time step
 };
 
+// The host's simulation box, as the fix sees it when it is defined.
+struct HostBox {
+  double lo[3], hi[3];
+  bool periodic[3];
+  bool triclinic;
+};
+
+// InputError unless the host has what the fix needs: spheres (radius and per-grain mass),
+// an orthogonal box periodic in x and y and not in z (the fluid has a bottom and a top)
+void check_darcy_host(bool spheres, const HostBox &box);
+// the grid the settings lay over the box: x and y span it, z runs from its bottom to zhi
+GridGeom darcy_grid_geom(const DarcySettings &settings, const HostBox &box);
+
 class FluidHost {
  public:
   // values[0..n) summed over the ranks, the same result on every rank
@@ -93,6 +106,10 @@ class DarcyFluid {
   static double machine_memory();    // physical memory in bytes, 0 if unknown
 
   const DarcySettings &settings() const { return settings_; }
+  // what the host logs when the fix is defined (lines ending in newlines)
+  std::string summary() const;
+  // the host's box now: "" while it still spans the grid in x and y, else the message
+  std::string box_mismatch(const HostBox &box) const;
   const CouplingGrid &grid() const { return grid_; }
   const DarcySolver &solver() const { return *solver_; }
   double z_grid_top() const { return solver_->z_grid_top(); }

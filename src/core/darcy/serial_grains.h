@@ -6,6 +6,8 @@
 
 #include "darcy/fluid.h"
 
+#include <climits>
+#include <cmath>
 #include <vector>
 
 namespace porewater {
@@ -18,6 +20,27 @@ struct CouplingArrays {
   int nlocal, groupbit;
   double **held;    // held[i]: grain i's fluid force, kept for `interpolate fluid`
 };
+
+// The smallest ID of a local grain of the group with a non-finite position or velocity,
+// LLONG_MAX if there is none (the host takes the minimum over its ranks); for the message
+// of the run that stops on it.
+template <class Tag> long long first_nonfinite_tag(const CouplingArrays &a, const Tag *tag)
+{
+  long long first = LLONG_MAX;
+  for (int i = 0; i < a.nlocal; ++i) {
+    if (!(a.mask[i] & a.groupbit)) continue;
+    bool finite = true;
+    for (int d = 0; d < 3; ++d) finite = finite && std::isfinite(a.x[i][d]) && std::isfinite(a.v[i][d]);
+    if (!finite && (long long) tag[i] < first) first = (long long) tag[i];
+  }
+  return first;
+}
+
+// a CPU host's Atom (LAMMPS and LIGGGHTS name their per-atom arrays alike)
+template <class Atom> CouplingArrays coupling_arrays_of(const Atom *atom, int groupbit, double **held)
+{
+  return CouplingArrays{atom->x, atom->v, atom->f, atom->radius, atom->mask, atom->nlocal, groupbit, held};
+}
 
 class SerialGrains final : public GrainBackend {
  public:

@@ -10,6 +10,8 @@
 
 #include "pw_inline.h"
 
+#include <type_traits>
+
 namespace porewater {
 
 template <class Image> struct HostGrains {
@@ -28,6 +30,16 @@ template <class Image> struct HostGrains {
   int mask(int i) const { return masks[i]; }
   Image image(int i) const { return images[i]; }
 };
+
+// The accessor over a CPU host's Atom: LAMMPS and LIGGGHTS name their per-atom arrays alike
+// (x, v, f, omega, torque, radius, rmass, mask, image).
+template <class Atom>
+auto grains_of_atom(const Atom *atom) -> HostGrains<typename std::remove_pointer<decltype(atom->image)>::type>
+{
+  using Image = typename std::remove_pointer<decltype(atom->image)>::type;
+  return HostGrains<Image>{atom->x,      atom->v,      atom->f,     atom->omega, atom->torque,
+                           atom->radius, atom->rmass,  atom->mask,  atom->image};
+}
 
 // body(i) for the grains [0, n)
 template <class Body> void for_each_grain(int n, const Body &body)

@@ -16,6 +16,21 @@ std::string shortest(double v)
 }
 }    // namespace
 
+std::string round_trip_text(double v)
+{
+  char text[40];
+  int digits = 1;
+  for (; digits < 17; ++digits) {
+    std::snprintf(text, sizeof(text), "%.*g", digits, v);
+    if (!std::isfinite(v) || std::strtod(text, nullptr) == v) break;
+  }
+  // whole digits before the point rather than an exponent, up to 16 of them (10, not 1e+01)
+  const int exponent = v != 0.0 && std::isfinite(v) ? (int) std::floor(std::log10(std::fabs(v))) : 0;
+  if (exponent >= digits && exponent < 16) digits = exponent + 1;
+  std::snprintf(text, sizeof(text), "%.*g", digits, v);
+  return text;
+}
+
 bool parse_number(const std::string &token, double &out)
 {
   if (token.empty()) return false;

@@ -28,6 +28,10 @@ struct NumberOrVariable {
 bool parse_number(const std::string &token, double &out);
 bool parse_int(const std::string &token, int &out);
 
+// The shortest text that reads back as v ("0.1", "-inf", "1e+300"), as LAMMPS' fmt prints
+// a number, for messages that quote a value exactly.
+std::string round_trip_text(double v);
+
 class KeywordReader {
  public:
   // `command` names the command in messages, e.g. "fix darcy/pressure"; args are the tokens

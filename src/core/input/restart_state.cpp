@@ -20,6 +20,15 @@ std::vector<double> restart_block(const RestartFormat &format, const std::vector
   return block;
 }
 
+void write_restart_block(std::FILE *fp, const RestartFormat &format,
+                         const std::vector<double> &values)
+{
+  const std::vector<double> block = restart_block(format, values);
+  const int size = (int) (block.size() * sizeof(double));
+  std::fwrite(&size, sizeof(int), 1, fp);
+  std::fwrite(block.data(), sizeof(double), block.size(), fp);
+}
+
 std::vector<double> restart_values(const RestartFormat &format, const char *block,
                                    long expected_count)
 {

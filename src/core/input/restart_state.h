@@ -6,6 +6,7 @@
 #ifndef PW_INPUT_RESTART_STATE_H
 #define PW_INPUT_RESTART_STATE_H
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,11 @@ struct RestartFormat {
 
 // the block to write: header + values
 std::vector<double> restart_block(const RestartFormat &format, const std::vector<double> &values);
+
+// Fix::write_restart on the rank that holds the file (LAMMPS and LIGGGHTS: rank 0): the
+// block's size in bytes (an int), then the block
+void write_restart_block(std::FILE *fp, const RestartFormat &format,
+                         const std::vector<double> &values);
 
 // the values of a block written by restart_block; an InputError unless the header matches
 // `format` and (when expected_count >= 0) holds exactly expected_count values

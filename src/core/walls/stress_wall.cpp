@@ -1,0 +1,124 @@
+#include "walls/stress_wall.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace porewater {
+
+const RestartFormat StressWall::RESTART{RestartStyle::WallStress, 1, "fix wall/stress"};
+
+StressWall::StressWall(const WallStressSettings &settings, const std::string &id) :
+    settings_(settings), id_(id), z_wall_(settings.z), v_wall_(0.0), wall_force_(0.0),
+    grain_force_(0.0), applied_stress_(0.0), spring_energy_(0.0), z_auto_(settings.z_auto)
+{
+}
+
+// The explicit dashpot on a grain is stable only for damping·Δt/m < 2; near that bound the
+// contact chatters, so warn well before it.
+void StressWall::init(StressWallHost &host, double dt)
+{
+  const double gamma = settings_.damping;
+  if (gamma <= 0.0) return;
+  const double lightest = host.min_over_ranks(host.lightest_grain());
+  const double ratio = gamma * dt / lightest;
+  if (!(ratio > 0.5)) return;
+  char text[16];
+  std::snprintf(text, sizeof(text), "%.3g", ratio);
+  host.warn("Fix wall/stress: damping " + round_trip_text(gamma) + " with timestep " +
+            round_trip_text(dt) + " and lightest grain mass " + round_trip_text(lightest) +
+            " gives damping*dt/m = " + text +
+            "; the explicit dashpot chatters above ~0.5 and is unstable above 2: lower "
+            "damping or the timestep");
+}
+
+void StressWall::setup(StressWallHost &host, long long step)
+{
+  if (z_auto_) {
+    const double top = host.max_over_ranks(host.highest_grain_top());
+    if (top == -std::numeric_limits<double>::infinity())
+      host.stop("Fix wall/stress: z auto needs grains in group " + host.group_name());
+    z_wall_ = top;
+    z_auto_ = false;
+  }
+  post_force(host, step);
+}
+
+void StressWall::initial_integrate(double dt)
+{
+  v_wall_ += 0.5 * dt * wall_force_ / settings_.mass;
+  z_wall_ += dt * v_wall_;
+}
+
+void StressWall::post_force(StressWallHost &host, long long step)
+{
+  applied_stress_ = host.stress_now();
+  double sums[3];
+  host.contact_sums(sums);
+  host.sum_over_ranks(sums, 2);
+  grain_force_ = sums[0];
+  spring_energy_ = sums[1];
+  wall_force_ = grain_force_ - applied_stress_ * host.box().area;
+  check_in_box(host, step);
+}
+
+void StressWall::final_integrate(double dt)
+{
+  v_wall_ += 0.5 * dt * wall_force_ / settings_.mass;
+}
+
+// every rank holds the same wall, so every rank reaches the same verdict
+void StressWall::check_in_box(StressWallHost &host, long long step)
+{
+  const std::string at = "Fix wall/stress " + id_ + ": ";
+  const std::string z = round_trip_text(z_wall_), when = std::to_string(step);
+  if (!std::isfinite(z_wall_) || !std::isfinite(v_wall_))
+    host.stop(at + "the wall ran away at step " + when + ": z = " + z + ", v = " +
+              round_trip_text(v_wall_));
+  const WallBox box = host.box();
+  if (z_wall_ < box.bottom)
+    host.stop(at + "the wall fell to z = " + z + " at step " + when + ", below the box bottom " +
+              round_trip_text(box.bottom) + " and so through every grain");
+  // a shrink-wrapped top follows the grains: allow a gap as high as the box itself
+  const double top = box.top_shrink_wrapped ? box.top + (box.top - box.bottom) : box.top;
+  if (z_wall_ > top)
+    host.stop(at + "the wall rose to z = " + z + " at step " + when + ", above the box top " +
+              round_trip_text(top));
+}
+
+// vector: 1 z_wall, 2 v_wall, 3 grain force per area (effective normal stress), 4 applied S
+double StressWall::vector(int n, double area) const
+{
+  switch (n) {
+    case 0:
+      return z_wall_;
+    case 1:
+      return v_wall_;
+    case 2:
+      return grain_force_ / area;
+    default:
+      return applied_stress_;
+  }
+}
+
+double *StressWall::extract(const std::string &name)
+{
+  if (name == "z_wall") return &z_wall_;
+  if (name == "v_wall") return &v_wall_;
+  return nullptr;
+}
+
+// restart: the wall's position, velocity, last force and whether `auto` is still pending
+std::vector<double> StressWall::restart_state() const
+{
+  return {z_wall_, v_wall_, wall_force_, z_auto_ ? 1.0 : 0.0};
+}
+
+void StressWall::restore(const std::vector<double> &state)
+{
+  z_wall_ = state[0];
+  v_wall_ = state[1];
+  wall_force_ = state[2];
+  z_auto_ = state[3] != 0.0;
+}
+
+}    // namespace porewater
