@@ -3,10 +3,14 @@
 # input that stops with an error, and checks that the error message reached stdout,
 # stderr and log.lammps, each exactly once, before the program stopped without a signal.
 #   Usage: check_error_message.sh CASE LMP PLUGIN_DIR MPIEXEC
-# Exit status 77: skipped (see serial_grid_memory).
+# Exit status 77: skipped (see serial_grid_memory; the *_kk cases where PW_HOST_KOKKOS=0, a
+# LAMMPS without KOKKOS).
 set -uo pipefail
 CASE=$1 LMP=$2 PLUGIN_DIR=$3 MPIEXEC=$4
 HERE=$(cd "$(dirname "$0")" && pwd)
+if [[ $CASE == *_kk ]] && [ "${PW_HOST_KOKKOS:?whether lmp has KOKKOS: 1 or 0}" = 0 ]; then
+  echo "skipped: this LAMMPS has no KOKKOS package, so the plugin has no /kk styles"; exit 77
+fi
 export LD_LIBRARY_PATH="$PLUGIN_DIR:${LD_LIBRARY_PATH:-}" OMP_NUM_THREADS=1 OMP_PROC_BIND=false
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 KK=(-k on t 1 -sf kk -pk kokkos neigh half newton off)

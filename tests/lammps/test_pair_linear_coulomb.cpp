@@ -202,7 +202,7 @@ TEST(PairLinearCoulomb, FrictionlessPairsSkipTheSpringWithoutChangingTheFlow)
   // ours skips it; then friction is switched on (pair_style/pair_coeff again, history kept)
   // and both go on from the same, empty springs
   const std::string on = "run 500\n";
-  double ke_native = 0, ke_ours = 0, ke_kk = 0;
+  double ke_native = 0, ke_ours = 0;
   const auto native = chute("gran/hooke/history 200000.0 200000.0 0.0 0.0 0.0 0", "* *", Accel::none,
                             &ke_native, {},
                             "pair_style gran/hooke/history 200000.0 200000.0 0.0 0.0 0.5 0\n" + on);
@@ -212,14 +212,23 @@ TEST(PairLinearCoulomb, FrictionlessPairsSkipTheSpringWithoutChangingTheFlow)
   // expected, 1e-12 of a diameter as in LeverRadiusReproducesNativeGranHookeHistory
   EXPECT_LE(pwtest::max_abs_diff(native, ours), 1e-12);
   EXPECT_DOUBLE_EQ(ke_ours, ke_native);
-  const auto kk = chute("linear/coulomb lever radius", "* * 200000.0 200000.0 0.0", Accel::kokkos,
-                        &ke_kk, {}, "pair_coeff * * 200000.0 200000.0 0.5\n" + on);
-  EXPECT_LE(pwtest::max_abs_diff(ours, kk), 1e-10);    // round-off, as in KokkosEqualsCpu (style matrix)
 
   // kt = 0: native keeps integrating a spring that exerts no force, ours keeps none
   const auto native_kt0 = chute("gran/hooke/history 200000.0 0.0 0.0 0.0 0.5 0", "* *");
   const auto ours_kt0 = chute("linear/coulomb lever radius", "* * 200000.0 0.0 0.5");
   EXPECT_LE(pwtest::max_abs_diff(native_kt0, ours_kt0), 1e-12);
+}
+
+TEST(PairLinearCoulomb, KokkosFrictionlessPairsSkipTheSpringWithoutChangingTheFlow)
+{
+  // the frictionless chute, then friction switched on, of the test above: /kk against CPU
+  PW_SKIP_WITHOUT_KOKKOS();
+  const std::string then = "pair_coeff * * 200000.0 200000.0 0.5\nrun 500\n";
+  const auto ours = chute("linear/coulomb lever radius", "* * 200000.0 200000.0 0.0", Accel::none,
+                          nullptr, {}, then);
+  const auto kk = chute("linear/coulomb lever radius", "* * 200000.0 200000.0 0.0", Accel::kokkos,
+                        nullptr, {}, then);
+  EXPECT_LE(pwtest::max_abs_diff(ours, kk), 1e-10);    // round-off, as in KokkosEqualsCpu (style matrix)
 }
 
 TEST(PairLinearCoulomb, FrictionlessImpactDissipatesNothing)
@@ -235,23 +244,34 @@ TEST(PairLinearCoulomb, FrictionlessImpactDissipatesNothing)
   std::printf("[ report ] frictionless oblique impact: energy residual %.3e\n", res);
 }
 
+namespace {
+// per type pair: the flowing grains (type 1) rub each other, slide freely on the base (2)
+const std::string mixed_coeffs = "1 1 200000.0 200000.0 0.5\npair_coeff 1 2 200000.0 200000.0 0.0\n"
+                                 "pair_coeff 2 2 200000.0 200000.0 0.5";
+}    // namespace
+
+TEST(PairLinearCoulomb, FrictionlessTypePairSpeedsTheFlow)
+{
+  // the frictionless base matters: without friction there the flow is faster
+  double ke_mixed = 0, ke_rough = 0;
+  chute("linear/coulomb", mixed_coeffs, Accel::none, &ke_mixed);
+  chute("linear/coulomb", "* * 200000.0 200000.0 0.5", Accel::none, &ke_rough);
+  EXPECT_GT(ke_mixed, ke_rough);
+}
+
 TEST(PairLinearCoulomb, KokkosEqualsCpuWithFrictionlessAndFrictionalTypePairs)
 {
-  // per type pair: the flowing grains (type 1) rub each other, slide freely on the base (2)
-  const std::string coeffs = "1 1 200000.0 200000.0 0.5\npair_coeff 1 2 200000.0 200000.0 0.0\n"
-                             "pair_coeff 2 2 200000.0 200000.0 0.5";
-  double ke_cpu = 0, ke_kk = 0, ke_rough = 0;
-  const auto cpu = chute("linear/coulomb", coeffs, Accel::none, &ke_cpu);
-  const auto kk = chute("linear/coulomb", coeffs, Accel::kokkos, &ke_kk);
+  PW_SKIP_WITHOUT_KOKKOS();
+  double ke_cpu = 0, ke_kk = 0;
+  const auto cpu = chute("linear/coulomb", mixed_coeffs, Accel::none, &ke_cpu);
+  const auto kk = chute("linear/coulomb", mixed_coeffs, Accel::kokkos, &ke_kk);
   EXPECT_LE(pwtest::max_abs_diff(cpu, kk), 1e-10);    // round-off, as in KokkosEqualsCpu (style matrix)
   EXPECT_NEAR(ke_kk, ke_cpu, 1e-10 * ke_cpu);
-  // and the frictionless base matters: without friction there the flow is faster
-  chute("linear/coulomb", "* * 200000.0 200000.0 0.5", Accel::none, &ke_rough);
-  EXPECT_GT(ke_cpu, ke_rough);
 }
 
 TEST(PairLinearCoulomb, KokkosWithTwoThreadsEqualsCpu)
 {
+  PW_SKIP_WITHOUT_KOKKOS();
   // HALFTHREAD neighbor lists: per-thread force copies summed at the end (OpenMP)
   double ke_cpu = 0, ke_kk = 0;
   const auto cpu = chute("linear/coulomb", "* * 200000.0 200000.0 0.5", Accel::none, &ke_cpu);
@@ -263,59 +283,88 @@ TEST(PairLinearCoulomb, KokkosWithTwoThreadsEqualsCpu)
   EXPECT_NEAR(ke_kk, ke_cpu, 1e-10 * ke_cpu);
 }
 
-TEST(PairLinearCoulomb, KokkosVirialEqualsCpuVirial)
+namespace {
+
+// the pressure of a compressed static packing, which comes from the contact virial alone
+double packing_pressure(const std::string &style, const std::string &coeff, Accel accel)
 {
-  // a compressed static packing: pressure comes from the contact virial alone
-  double press[3];
-  const char *styles[3] = {"linear/coulomb lever radius", "linear/coulomb lever radius",
-                           "gran/hooke/history 1000.0 1000.0 0.0 0.0 0.5 0"};
-  const char *coeffs[3] = {"* * 1000.0 1000.0 0.5", "* * 1000.0 1000.0 0.5", "* *"};
-  Accel accel[3] = {Accel::none, Accel::kokkos, Accel::none};
-  for (int k = 0; k < 3; k++) {
-    Lammps l(accel[k]);
-    l.commands(pwtest::dense_gas(5));
-    l.command("set type 1 diameter 1.08");    // overlaps of up to 0.08 everywhere
-    l.command(std::string("pair_style ") + styles[k]);
-    l.command(std::string("pair_coeff ") + coeffs[k]);
-    l.command("velocity all set 0 0 0");
-    l.command("run 0");
-    press[k] = l.thermo("press");
-  }
-  ASSERT_GT(press[0], 0.0);
-  EXPECT_NEAR(press[1], press[0], 1e-12 * press[0]);    // /kk tallies the same virial
-  EXPECT_NEAR(press[2], press[0], 1e-12 * press[0]);    // and both equal native CPU
+  Lammps l(accel);
+  l.commands(pwtest::dense_gas(5));
+  l.command("set type 1 diameter 1.08");    // overlaps of up to 0.08 everywhere
+  l.command("pair_style " + style);
+  l.command("pair_coeff " + coeff);
+  l.command("velocity all set 0 0 0");
+  l.command("run 0");
+  return l.thermo("press");
 }
 
-TEST(PairLinearCoulomb, RunsSplitByRunCommandsEqualOneRun)
+}    // namespace
+
+TEST(PairLinearCoulomb, VirialEqualsNativeGranHookeHistoryVirial)
 {
-  // each run's setup re-sorts atoms and rebuilds neighbor lists: histories must survive
-  // (on KOKKOS they did not before scripts/patches/lammps-kokkos-neigh-history.patch)
-  for (Accel accel : {Accel::none, Accel::kokkos}) {
-    std::map<long, std::vector<double>> one, two;
-    for (int pieces : {1, 2}) {
-      Lammps l(accel);
-      l.commands(pwtest::frictional_gas());
-      l.command(pieces == 1 ? "run 300" : "run 150");
-      if (pieces == 2) l.command("run 150");
-      (pieces == 1 ? one : two) = l.unwrapped();
-    }
-    EXPECT_LE(pwtest::max_abs_diff(one, two), 1e-12) << (accel == Accel::none ? "cpu" : "kk");
+  const double ours = packing_pressure("linear/coulomb lever radius", "* * 1000.0 1000.0 0.5",
+                                       Accel::none);
+  const double native = packing_pressure("gran/hooke/history 1000.0 1000.0 0.0 0.0 0.5 0", "* *",
+                                         Accel::none);
+  ASSERT_GT(ours, 0.0);
+  EXPECT_NEAR(native, ours, 1e-12 * ours);
+}
+
+TEST(PairLinearCoulomb, KokkosVirialEqualsCpuVirial)
+{
+  PW_SKIP_WITHOUT_KOKKOS();
+  const double cpu = packing_pressure("linear/coulomb lever radius", "* * 1000.0 1000.0 0.5",
+                                      Accel::none);
+  const double kk = packing_pressure("linear/coulomb lever radius", "* * 1000.0 1000.0 0.5",
+                                     Accel::kokkos);
+  ASSERT_GT(cpu, 0.0);
+  EXPECT_NEAR(kk, cpu, 1e-12 * cpu);    // /kk tallies the same virial
+}
+
+namespace {
+
+// each run's setup re-sorts atoms and rebuilds neighbor lists: histories must survive
+// (on KOKKOS they did not before scripts/patches/lammps-kokkos-neigh-history.patch)
+void split_runs_equal_one_run(Accel accel)
+{
+  std::map<long, std::vector<double>> one, two;
+  for (int pieces : {1, 2}) {
+    Lammps l(accel);
+    l.commands(pwtest::frictional_gas());
+    l.command(pieces == 1 ? "run 300" : "run 150");
+    if (pieces == 2) l.command("run 150");
+    (pieces == 1 ? one : two) = l.unwrapped();
   }
+  EXPECT_LE(pwtest::max_abs_diff(one, two), 1e-12);
+}
+
+// grains of radius 0.5 whose centres are 0.4 apart overlap by 1.2 radii: a blown-up state
+void broken_contact_is_named(Accel accel)
+{
+  Lammps l(accel);
+  l.commands("units lj\natom_style sphere\natom_modify map array\nboundary p p p\n"
+             "newton off on\ncomm_modify vel yes\nregion box block -3 3 -3 3 -3 3\n"
+             "create_box 1 box\ncreate_atoms 1 single 0 0 0 units box\n"
+             "create_atoms 1 single 0.4 0 0 units box\nset type 1 diameter 1.0\n"
+             "set type 1 density 1.9099\npair_style linear/coulomb\n"
+             "pair_coeff * * 1000.0 1000.0 0.5\nfix integrate all nve/sphere\n");
+  expect_error(l, "run 0", "grains 1 and 2");
+}
+
+}    // namespace
+
+PW_TEST_CPU_AND_KOKKOS(PairLinearCoulomb, RunsSplitByRunCommandsEqualOneRun,
+                       split_runs_equal_one_run)
+
+TEST(PairLinearCoulomb, KokkosBrokenContactStopsTheRunNamingTheGrains)
+{
+  PW_SKIP_WITHOUT_KOKKOS();
+  broken_contact_is_named(Accel::kokkos);
 }
 
 TEST(PairLinearCoulomb, BrokenContactStopsTheRunNamingTheGrains)
 {
-  // grains of radius 0.5 whose centres are 0.4 apart overlap by 1.2 radii: a blown-up state
-  for (Accel accel : {Accel::none, Accel::kokkos}) {
-    Lammps l(accel);
-    l.commands("units lj\natom_style sphere\natom_modify map array\nboundary p p p\n"
-               "newton off on\ncomm_modify vel yes\nregion box block -3 3 -3 3 -3 3\n"
-               "create_box 1 box\ncreate_atoms 1 single 0 0 0 units box\n"
-               "create_atoms 1 single 0.4 0 0 units box\nset type 1 diameter 1.0\n"
-               "set type 1 density 1.9099\npair_style linear/coulomb\n"
-               "pair_coeff * * 1000.0 1000.0 0.5\nfix integrate all nve/sphere\n");
-    expect_error(l, "run 0", "grains 1 and 2");
-  }
+  broken_contact_is_named(Accel::none);
   // the limit is the user's: 1.3 radii lets the same state run
   Lammps l;
   l.commands("units lj\natom_style sphere\natom_modify map array\nboundary p p p\n"
