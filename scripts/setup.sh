@@ -235,12 +235,20 @@ for host in $HOSTS; do
     { tail -20 "$logs-install.log"; exit 1; }
 
   build="$REPO/$PW_BUILD_NAME"
-  if [ ! -f "$build/build.ninja" ] ||
-     ! grep -qxF "PW_LMP_PACKAGES:STRING=$packages" "$build/CMakeCache.txt"; then
+  # the tests' view of the host: the packages it was built with; the other host's plugin,
+  # which this host's lmp must refuse in words (tests/batch, other_host)
+  other=build-2025; [ "$host" = 2025 ] && other=build
+  settings=("PW_LMP_PACKAGES:STRING=$packages" "PW_OTHER_PLUGIN:FILEPATH=$REPO/$other/plugin/porewater.so")
+  configure=0
+  [ -f "$build/build.ninja" ] || configure=1
+  for s in "${settings[@]}"; do
+    grep -qxF "$s" "$build/CMakeCache.txt" 2>/dev/null || configure=1
+  done
+  if [ $configure = 1 ]; then
     cmake -S "$REPO" -B "$build" -G Ninja -D CMAKE_BUILD_TYPE=Release \
       -D CMAKE_CXX_COMPILER_LAUNCHER=ccache \
       -D LAMMPS_SOURCE_DIR="$LAMMPS_SRC/src" -D LAMMPS_BUILD_DIR="$LAMMPS_BUILD" \
-      -D CMAKE_PREFIX_PATH="$LAMMPS_PREFIX" -D PW_LMP_PACKAGES="$packages" >/dev/null
+      -D CMAKE_PREFIX_PATH="$LAMMPS_PREFIX" "${settings[@]/#/-D}" >/dev/null
   fi
   log "building the plugin ($host) in $build"
   cmake --build "$build" -j "$JOBS"

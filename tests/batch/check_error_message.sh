@@ -26,7 +26,7 @@ count() { grep -cF -- "$1" "$2" 2>/dev/null || true; }    # lines of file $2 hol
 # run NP INPUT ARGS...: stdout -> out.txt, stderr -> err.txt, stdin from /dev/null
 run() {
   local np=$1 input=$2; shift 2
-  cp "$HERE/$input" .
+  [ -f "$input" ] || cp "$HERE/$input" .
   if [ "$np" = 1 ]; then
     "$LMP" -in "$input" "$@" >out.txt 2>err.txt </dev/null
   else
@@ -108,6 +108,19 @@ case $CASE in
   np2_rank1_screen_none) # no screen: the log and stderr still get it
     run 2 in.overlap -screen none
     expect "ERROR on proc 1: Pair linear/coulomb" err.txt log.lammps ;;
+  other_host)            # the plugin built for the other LAMMPS host: refused in words
+    [ -f "${PW_OTHER_PLUGIN:-}" ] ||
+      { echo "skipped: no plugin of another LAMMPS host (PW_OTHER_PLUGIN='${PW_OTHER_PLUGIN:-}'; PW_LAMMPS=both builds one)"; exit 77; }
+    printf 'plugin load %s\npair_style linear/coulomb\n' "$PW_OTHER_PLUGIN" > in.other_host
+    run 1 in.other_host
+    built_for=$(grep -o 'built for LAMMPS version [0-9]*' out.txt | head -1 | grep -o '[0-9]*$')
+    check "the plugin names the LAMMPS it was built for ($built_for), not this one ($PW_HOST_VERSION)" \
+      test -n "$built_for" -a "$built_for" != "$PW_HOST_VERSION"
+    refused="ERROR: porewater.so was built for LAMMPS version $built_for, this LAMMPS is $PW_HOST_VERSION: no styles registered"
+    expect "$refused" out.txt err.txt
+    # the log echoes the print command that writes it there, so it holds the text twice
+    check "'$refused' in log.lammps" grep -qF -- "$refused" log.lammps
+    expect "Unrecognized pair style 'linear/coulomb'" ;;
   *) echo "unknown case $CASE"; exit 2 ;;
 esac
 exit $failed
