@@ -8,7 +8,9 @@ executed equally often: a loop body is one run, its count is the trip count.
 
 Usage:
     valgrind --tool=callgrind --dump-instr=yes --callgrind-out-file=OUT lmp -in ...
-    bench/callgrind_asm.py OUT path/to/porewater.so SYMBOL_SUBSTRING [--min COUNT]
+    bench/callgrind_asm.py OUT path/to/porewater_styles.so SYMBOL_SUBSTRING [--min COUNT]
+(the styles' object: plugin/porewater_styles.so since the plugin has a loader, porewater.so;
+plugin/porewater.so itself in builds before that)
 SYMBOL_SUBSTRING picks the first symbol (demangled) containing it; pass enough of it to be
 unique, e.g. 'FixDarcyPressure::deposit_grains(double)'. --min hides runs executed fewer
 times (default 1000).

@@ -211,9 +211,11 @@ for host in $HOSTS; do
   if [ "$host" = 2021 ]; then
     host_options=(-D LAMMPS_EXCEPTIONS=on -D PKG_KOKKOS=on
       -D Kokkos_ENABLE_SERIAL=on -D Kokkos_ENABLE_OPENMP=on)
+    packages="GRANULAR;PLUGIN;KOKKOS/OpenMP"    # what lammps.lmp_has_packages checks
     cold="~10 min"
   else # exceptions are always on since 2023; no Kokkos source: LAMMPS' OPENMP package instead
     host_options=(-D PKG_OPENMP=on)
+    packages="GRANULAR;PLUGIN;OPENMP"
     cold="~7-10 min"
   fi
   if [ ! -f "$LAMMPS_BUILD/build.ninja" ]; then
@@ -233,11 +235,20 @@ for host in $HOSTS; do
     { tail -20 "$logs-install.log"; exit 1; }
 
   build="$REPO/$PW_BUILD_NAME"
-  if [ ! -f "$build/build.ninja" ]; then
+  # the tests' view of the host: the packages it was built with; the other host's plugin,
+  # which this host's lmp must refuse in words (tests/batch, other_host)
+  other=build-2025; [ "$host" = 2025 ] && other=build
+  settings=("PW_LMP_PACKAGES:STRING=$packages" "PW_OTHER_PLUGIN:FILEPATH=$REPO/$other/plugin/porewater.so")
+  configure=0
+  [ -f "$build/build.ninja" ] || configure=1
+  for s in "${settings[@]}"; do
+    grep -qxF "$s" "$build/CMakeCache.txt" 2>/dev/null || configure=1
+  done
+  if [ $configure = 1 ]; then
     cmake -S "$REPO" -B "$build" -G Ninja -D CMAKE_BUILD_TYPE=Release \
       -D CMAKE_CXX_COMPILER_LAUNCHER=ccache \
       -D LAMMPS_SOURCE_DIR="$LAMMPS_SRC/src" -D LAMMPS_BUILD_DIR="$LAMMPS_BUILD" \
-      -D CMAKE_PREFIX_PATH="$LAMMPS_PREFIX" >/dev/null
+      -D CMAKE_PREFIX_PATH="$LAMMPS_PREFIX" "${settings[@]/#/-D}" >/dev/null
   fi
   log "building the plugin ($host) in $build"
   cmake --build "$build" -j "$JOBS"

@@ -7,6 +7,7 @@
 ------------------------------------------------------------------------- */
 
 #include "fix_darcy_pressure.h"
+#include "fix_darcy_pressure_grid.h"
 
 #include "lammps_compat.h"
 #include "atom.h"
@@ -59,6 +60,10 @@ FixDarcyPressure::FixDarcyPressure(LAMMPS *lmp, int narg, char **arg) :
   size_peratom_cols = 3;
   peratom_freq = 1;
   restart_global = 1;
+#if PW_LAMMPS_HAS_GRID3D
+  pergrid_flag = 1;
+  pergrid_freq = s.every;    // the fields change on fluid steps only
+#endif
   time_depend = 1;    // the fluid clock counts timesteps: no reset_timestep
   dynamic_group_allow = 1;
 }

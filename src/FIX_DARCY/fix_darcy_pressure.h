@@ -12,6 +12,7 @@
 
 #include "darcy/fluid.h"
 #include "darcy/serial_grains.h"
+#include "lammps_compat.h"
 #include "lammps_input.h"
 
 #include <memory>
@@ -31,6 +32,14 @@ class FixDarcyPressure : public Fix, protected porewater::FluidHost {
   void restart(char *) override;
   void *extract(const char *, int &) override;
   double memory_usage() override;
+#if PW_LAMMPS_HAS_GRID3D
+  // the fields as per-grid data (dump grid, fix ave/grid): fix_darcy_pressure_grid.cpp
+  int get_grid_by_name(const std::string &, int &) override;
+  void *get_grid_by_index(int) override;
+  int get_griddata_by_name(int, const std::string &, int &) override;
+  void *get_griddata_by_index(int) override;
+  void reset_grid() override;
+#endif
 
  protected:
   // the grains' side: CPU loops here, KOKKOS kernels in the /kk variant
@@ -60,6 +69,9 @@ class FixDarcyPressure : public Fix, protected porewater::FluidHost {
   porewater::GrainStep now() const;
   porewater::HostBox host_box() const;
   porewater::SerialGrains cpu_grains;
+#if PW_LAMMPS_HAS_GRID3D
+  std::unique_ptr<class DarcyGridData> grid_data;
+#endif
 };
 
 }    // namespace LAMMPS_NS

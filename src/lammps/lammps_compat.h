@@ -3,8 +3,15 @@
 #ifndef PW_LAMMPS_COMPAT_H
 #define PW_LAMMPS_COMPAT_H
 
-#include "lammps_compat.h"
 #include "atom.h"
+
+// Grid3d, per-grid data of fixes, dump grid and fix ave/grid: LAMMPS since 22Dec2022 (the
+// GridComm of 29Sep2021 has no such interface); PW_LAMMPS_VERSION_NUMBER comes from CMake
+#if PW_LAMMPS_VERSION_NUMBER >= 20221222
+#define PW_LAMMPS_HAS_GRID3D 1
+#else
+#define PW_LAMMPS_HAS_GRID3D 0
+#endif
 
 namespace porewater {
 

@@ -1,6 +1,6 @@
 // Registers every style of the package, and its KOKKOS variants where this LAMMPS has the
-// KOKKOS package, with LAMMPS' `plugin load porewater.so`. The only file that includes
-// every style.
+// KOKKOS package, for LAMMPS' `plugin load porewater.so` (porewater_loader.cpp, which
+// checks the LAMMPS version first). The only file that includes every style.
 
 #include "lammpsplugin.h"
 #include "library.h"
@@ -116,20 +116,9 @@ struct Registrar {
 
 }    // namespace
 
-extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
+// called by porewater.so once it has checked that this is the LAMMPS the styles were built for
+extern "C" void porewater_register_styles(void *lmp, void *handle, void *regfunc)
 {
-  // A plugin built against another LAMMPS' headers would crash at its first access to a
-  // class that changed: register nothing and say so, through the C API only.
-  const int running = lammps_version(lmp);
-  if (running != PW_LAMMPS_VERSION_NUMBER) {
-    const std::string message = "porewater.so was built for LAMMPS version " +
-        std::to_string(PW_LAMMPS_VERSION_NUMBER) + ", this LAMMPS is " +
-        std::to_string(running) + ": no styles registered; rebuild the plugin against this "
-        "LAMMPS (README, \"Building the plugin yourself\")";
-    std::fprintf(stderr, "ERROR: %s\n", message.c_str());
-    lammps_command(lmp, ("print \"ERROR: " + message + "\"").c_str());
-    return;
-  }
   Registrar r{lmp, (lammpsplugin_regfunc) regfunc, handle};
   r.add_pair<PairLinearCoulomb, PairLinearCoulombKokkos>(
       "linear/coulomb", "linear spring + Coulomb friction contacts, no damping");

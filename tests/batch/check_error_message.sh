@@ -3,10 +3,14 @@
 # input that stops with an error, and checks that the error message reached stdout,
 # stderr and log.lammps, each exactly once, before the program stopped without a signal.
 #   Usage: check_error_message.sh CASE LMP PLUGIN_DIR MPIEXEC
-# Exit status 77: skipped (see serial_grid_memory).
+# Exit status 77: skipped (see serial_grid_memory; the *_kk cases where PW_HOST_KOKKOS=0, a
+# LAMMPS without KOKKOS).
 set -uo pipefail
 CASE=$1 LMP=$2 PLUGIN_DIR=$3 MPIEXEC=$4
 HERE=$(cd "$(dirname "$0")" && pwd)
+if [[ $CASE == *_kk ]] && [ "${PW_HOST_KOKKOS:?whether lmp has KOKKOS: 1 or 0}" = 0 ]; then
+  echo "skipped: this LAMMPS has no KOKKOS package, so the plugin has no /kk styles"; exit 77
+fi
 export LD_LIBRARY_PATH="$PLUGIN_DIR:${LD_LIBRARY_PATH:-}" OMP_NUM_THREADS=1 OMP_PROC_BIND=false
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 KK=(-k on t 1 -sf kk -pk kokkos neigh half newton off)
@@ -22,7 +26,7 @@ count() { grep -cF -- "$1" "$2" 2>/dev/null || true; }    # lines of file $2 hol
 # run NP INPUT ARGS...: stdout -> out.txt, stderr -> err.txt, stdin from /dev/null
 run() {
   local np=$1 input=$2; shift 2
-  cp "$HERE/$input" .
+  [ -f "$input" ] || cp "$HERE/$input" .
   if [ "$np" = 1 ]; then
     "$LMP" -in "$input" "$@" >out.txt 2>err.txt </dev/null
   else
@@ -104,6 +108,19 @@ case $CASE in
   np2_rank1_screen_none) # no screen: the log and stderr still get it
     run 2 in.overlap -screen none
     expect "ERROR on proc 1: Pair linear/coulomb" err.txt log.lammps ;;
+  other_host)            # the plugin built for the other LAMMPS host: refused in words
+    [ -f "${PW_OTHER_PLUGIN:-}" ] ||
+      { echo "skipped: no plugin of another LAMMPS host (PW_OTHER_PLUGIN='${PW_OTHER_PLUGIN:-}'; PW_LAMMPS=both builds one)"; exit 77; }
+    printf 'plugin load %s\npair_style linear/coulomb\n' "$PW_OTHER_PLUGIN" > in.other_host
+    run 1 in.other_host
+    built_for=$(grep -o 'built for LAMMPS version [0-9]*' out.txt | head -1 | grep -o '[0-9]*$')
+    check "the plugin names the LAMMPS it was built for ($built_for), not this one ($PW_HOST_VERSION)" \
+      test -n "$built_for" -a "$built_for" != "$PW_HOST_VERSION"
+    refused="ERROR: porewater.so was built for LAMMPS version $built_for, this LAMMPS is $PW_HOST_VERSION: no styles registered"
+    expect "$refused" out.txt err.txt
+    # the log echoes the print command that writes it there, so it holds the text twice
+    check "'$refused' in log.lammps" grep -qF -- "$refused" log.lammps
+    expect "Unrecognized pair style 'linear/coulomb'" ;;
   *) echo "unknown case $CASE"; exit 2 ;;
 esac
 exit $failed

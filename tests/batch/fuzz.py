@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Keyword fuzz test of every style of the plugin, CPU and /kk.
+"""Keyword fuzz test of every style of the plugin, CPU or /kk.
 
 From a small valid input per style, every keyword line of the style (pair_style and
 pair_coeff, the fix commands) is mutated one change at a time: a token dropped, repeated,
@@ -14,13 +14,16 @@ stdout and stderr to files), under a time limit, and is classified:
   FAIL       died by a signal, timed out, exited nonzero without the ERROR line in both
              files, or exited 0 without completing or with a non-finite thermo value
 
-The mutants are enumerated in a fixed order; a run takes a sample of PW_FUZZ_COUNT of them
-(default 240: about a minute on two cores), drawn with PW_FUZZ_SEED (default 1) in turn
-from each input, CPU and /kk; PW_FUZZ_COUNT=all runs every mutant (about 3000: 15 minutes
-on two jobs). Exit status 1 if any mutant failed; the failures are
-written, with the input line and the tail of each output, to --failures.
+The mutants are enumerated in a fixed order; --accel picks the CPU styles (cpu), their /kk
+variants (kk) or both; a run takes a sample of PW_FUZZ_COUNT of them (default 120: about
+half a minute on two cores), drawn with PW_FUZZ_SEED (default 1) in turn from each input;
+PW_FUZZ_COUNT=all runs every mutant (about 1500 per accel: 7 minutes on two jobs). Exit
+status 1 if any mutant failed; the failures are written, with the input line and the tail
+of each output, to --failures. Exit status 77 (skipped) for --accel kk where
+PW_HOST_KOKKOS=0 (a LAMMPS without KOKKOS).
 
-  fuzz.py --lmp LMP --plugin-dir DIR [--jobs 2] [--timeout 20] [--failures FILE] [--list]
+  fuzz.py --lmp LMP --plugin-dir DIR [--accel cpu|kk|both] [--jobs 2] [--timeout 20]
+          [--failures FILE] [--list]
 """
 import argparse
 import concurrent.futures
@@ -147,10 +150,15 @@ def mutations(line):
     return [(d, " ".join(m)) for d, m in out if m != tokens]
 
 
-def all_mutants():
+def accelerations(accel):
+    """The values of `kokkos` that --accel selects."""
+    return {"cpu": (False,), "kk": (True,), "both": (False, True)}[accel]
+
+
+def all_mutants(accel="both"):
     """[(style, kokkos, description, original line, mutated line, input)] in a fixed order."""
     result = []
-    for kokkos in (False, True):
+    for kokkos in accelerations(accel):
         for style, text in STYLES.items():
             lines = text.splitlines()
             for n, line in enumerate(lines):
@@ -182,8 +190,8 @@ def sample(mutants, count, seed):
     return sorted(chosen)
 
 
-def valid_inputs():
-    for kokkos in (False, True):
+def valid_inputs(accel="both"):
+    for kokkos in accelerations(accel):
         for style, text in STYLES.items():
             body = "\n".join(l[1:] if l.startswith("@") else l for l in text.splitlines()) + "\n"
             yield (style + ("/kk" if kokkos else ""), kokkos, "the valid input", "", "", body)
@@ -278,7 +286,8 @@ def main():
     p.add_argument("--plugin-dir", required=True)
     p.add_argument("--jobs", type=int, default=int(os.environ.get("PW_FUZZ_JOBS", "2")))
     p.add_argument("--timeout", type=int, default=20)
-    p.add_argument("--count", default=os.environ.get("PW_FUZZ_COUNT", "240"))
+    p.add_argument("--accel", choices=("cpu", "kk", "both"), default="both")
+    p.add_argument("--count", default=os.environ.get("PW_FUZZ_COUNT", "120"))
     p.add_argument("--seed", type=int, default=int(os.environ.get("PW_FUZZ_SEED", "1")))
     p.add_argument("--failures", default="fuzz_failures.txt")
     p.add_argument("--outcomes", default=None, help="write every outcome here (tab-separated)")
@@ -288,7 +297,13 @@ def main():
     args.lmp = os.path.abspath(args.lmp)
     args.plugin_dir = os.path.abspath(args.plugin_dir)
 
-    mutants = all_mutants()
+    if args.accel != "cpu" and os.environ.get("PW_HOST_KOKKOS") == "0":
+        if args.accel == "both":
+            print("this LAMMPS has no KOKKOS package (PW_HOST_KOKKOS=0): use --accel cpu")
+            return 2
+        print("skipped: this LAMMPS has no KOKKOS package, so the plugin has no /kk styles")
+        return 77
+    mutants = all_mutants(args.accel)
     chosen = list(range(len(mutants)))
     if args.count != "all" and int(args.count) < len(mutants):
         chosen = sample(mutants, int(args.count), args.seed)
@@ -298,11 +313,12 @@ def main():
             print(f"{i:5d} {m[0]:24s} {m[2]:40s} {m[4]}")
         return 0
     # the valid inputs first: each must run cleanly, or the fuzzing means nothing
-    todo = list(valid_inputs()) + [mutants[i] for i in chosen]
+    todo = list(valid_inputs(args.accel)) + [mutants[i] for i in chosen]
     own_work = args.work is None
     if own_work:
         args.work = tempfile.mkdtemp(prefix="pw_fuzz_")
-    print(f"{len(mutants)} mutants of {len(STYLES)} inputs (CPU and /kk); running "
+    what = {"cpu": "CPU", "kk": "/kk", "both": "CPU and /kk"}[args.accel]
+    print(f"{len(mutants)} mutants of {len(STYLES)} inputs ({what}); running "
           f"{len(chosen)} (seed {args.seed}) and the {len(todo) - len(chosen)} valid inputs "
           f"on {args.jobs} jobs, {args.timeout} s each at most", flush=True)
     start = time.time()

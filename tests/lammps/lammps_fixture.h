@@ -1,5 +1,6 @@
 // Drives LAMMPS through its C++ library interface for the tests: one instance per object,
-// with the porewater plugin loaded, plain or with KOKKOS (OpenMP) and -sf kk.
+// with the porewater plugin loaded, plain or with KOKKOS (OpenMP) and -sf kk. What the host
+// LAMMPS has (KOKKOS or not, its version) comes from CMake (src/lammps/CMakeLists.txt).
 #ifndef PW_TEST_LAMMPS_FIXTURE_H
 #define PW_TEST_LAMMPS_FIXTURE_H
 
@@ -24,9 +25,44 @@
 #include <string>
 #include <vector>
 
+#if !defined(PW_HOST_KOKKOS) || !defined(PW_HOST_VERSION)
+#error "tests/lammps/CMakeLists.txt defines PW_HOST_KOKKOS and PW_HOST_VERSION"
+#endif
+
 namespace pwtest {
 
 enum class Accel { none, kokkos };
+
+// whether the host LAMMPS has the KOKKOS package: the plugin has /kk styles only then
+constexpr bool host_has_kokkos = PW_HOST_KOKKOS != 0;
+// the host's LAMMPS version as a number, e.g. 20210929, 20250204
+constexpr long host_version = PW_HOST_VERSION;
+
+}    // namespace pwtest
+
+// The first statement of every test that runs a /kk style: on a LAMMPS without KOKKOS the
+// test is skipped, saying why (ctest reports it as skipped), never passed without
+// running. Tests that also check CPU physics keep that in a CPU test of their own.
+#define PW_SKIP_WITHOUT_KOKKOS()                                                            \
+  if (!pwtest::host_has_kokkos)                                                             \
+  GTEST_SKIP() << "this LAMMPS has no KOKKOS package, so the plugin has no /kk styles"
+
+// Two tests of one check: suite.name runs check(Accel::none), suite.Kokkos<name> runs
+// check(Accel::kokkos) and is skipped on a LAMMPS without KOKKOS.
+#define PW_TEST_CPU_AND_KOKKOS(suite, name, check)                                          \
+  TEST(suite, name) { check(pwtest::Accel::none); }                                          \
+  TEST(suite, Kokkos##name)                                                                  \
+  {                                                                                          \
+    PW_SKIP_WITHOUT_KOKKOS();                                                                \
+    check(pwtest::Accel::kokkos);                                                            \
+  }
+
+// The first statement of a test of commands that only LAMMPS since `version` has.
+#define PW_SKIP_BEFORE_LAMMPS(version, what)                                                \
+  if (pwtest::host_version < (version))                                                     \
+  GTEST_SKIP() << "LAMMPS " << pwtest::host_version << " has no " << (what)
+
+namespace pwtest {
 
 // Only one instance may exist at a time: LAMMPS keeps the list of loaded plugins per
 // process, so a second live instance would not see the plugin's styles.
@@ -36,6 +72,9 @@ class Lammps {
                   std::vector<std::string> extra = {})
   {
     std::vector<std::string> args = {"lmp", "-log", "none", "-screen", "none", "-nocite"};
+    if (accel == Accel::kokkos && !host_has_kokkos)
+      throw std::logic_error("a /kk run on a LAMMPS without KOKKOS: the test must begin with "
+                             "PW_SKIP_WITHOUT_KOKKOS()");
     if (accel == Accel::kokkos) args.insert(args.end(), {"-k", "on", "t", "1", "-sf", "kk"});
     args.insert(args.end(), extra.begin(), extra.end());
     std::vector<char *> argv;

@@ -80,6 +80,7 @@ TEST(FixDarcyInterpolate, ReneighboringEveryStepMakesTheModesIdentical)
 
 TEST(FixDarcyInterpolate, KokkosHoldsTheSameForcesAsTheCpuFix)
 {
+  PW_SKIP_WITHOUT_KOKKOS();
   const std::string every7 = "neigh_modify every 7 delay 0 check no";
   const auto cpu = forces_by_step("fluid", every7, 30);
   const auto kk = forces_by_step("fluid", every7, 30, Accel::kokkos);

@@ -96,6 +96,7 @@ TEST(FixWallStress, WallOnCubicStackCarriesTheAppliedStress)
 
 TEST(FixWallStress, KokkosVirialEqualsCpuVirial)
 {
+  PW_SKIP_WITHOUT_KOKKOS();
   double pzz[2];
   const Accel accel[2] = {Accel::none, Accel::kokkos};
   for (int k = 0; k < 2; k++) {

@@ -87,27 +87,32 @@ TEST(IntegratorStability, EnergyStaysBoundedAtTheRecommendedEpsilon)
   EXPECT_LT(corrected.highest, eps2);
 }
 
-TEST(IntegratorStability, UnstableEpsilonStopsWithTheOverlapLimitError)
+namespace {
+
+// Each integrator above its limit on this gas in the stability map of
+// bench/RESULTS_integrators.md (Verlet 0.2, sphere's Taylor step 0.05; the corrector, which
+// dissipates, holds at 1.0 and breaks abruptly by 1.4), yet small enough that the first
+// steps are sound: the instability grows over several steps, and pair linear/coulomb's
+// overlap_limit must stop the run naming the step and grains, not let it run on with NaN.
+void unstable_epsilon_stops(Accel accel)
 {
-  // Each integrator above its limit on this gas in the stability map of
-  // bench/RESULTS_integrators.md (Verlet 0.2, sphere's Taylor step 0.05; the corrector, which
-  // dissipates, holds at 1.0 and breaks abruptly by 1.4), yet small enough that the first
-  // steps are sound: the instability grows over several steps, and pair linear/coulomb's
-  // overlap_limit must stop the run naming the step and grains, not let it run on with NaN.
   const std::pair<std::string, double> cases[] = {{"nve/sphere", 1.0},
                                                   {"nve/sphere/ty3", 0.3},
                                                   {"nve/sphere/ty3 corrector yes", 1.2}};
   for (const auto &c : cases) {
-    for (Accel accel : {Accel::none, Accel::kokkos}) {
-      Lammps l(accel);
-      frictionless_gas(l, c.first, c.second);
-      l.command("run 0");    // the starting state is sound: no contact deeper than the limit
-      pwtest::expect_error(l, "run 1000", "more than overlap_limit 0.5 of the smaller radius");
-      const long stopped = (long) l.lmp->update->ntimestep;
-      std::printf("[ report ] %s%s at eps %.2f: stopped at step %ld\n", c.first.c_str(),
-                  accel == Accel::kokkos ? " (kk)" : "", c.second, stopped);
-      EXPECT_GT(stopped, 2);    // grew over steps, not one impossible step
-      EXPECT_LT(stopped, 1000);
-    }
+    Lammps l(accel);
+    frictionless_gas(l, c.first, c.second);
+    l.command("run 0");    // the starting state is sound: no contact deeper than the limit
+    pwtest::expect_error(l, "run 1000", "more than overlap_limit 0.5 of the smaller radius");
+    const long stopped = (long) l.lmp->update->ntimestep;
+    std::printf("[ report ] %s%s at eps %.2f: stopped at step %ld\n", c.first.c_str(),
+                accel == Accel::kokkos ? " (kk)" : "", c.second, stopped);
+    EXPECT_GT(stopped, 2);    // grew over steps, not one impossible step
+    EXPECT_LT(stopped, 1000);
   }
 }
+
+}    // namespace
+
+PW_TEST_CPU_AND_KOKKOS(IntegratorStability, UnstableEpsilonStopsWithTheOverlapLimitError,
+                       unstable_epsilon_stops)

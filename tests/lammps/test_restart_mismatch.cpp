@@ -17,25 +17,30 @@ const char *BOX = "units lj\natom_style sphere\nboundary p p f\nregion box block
 const std::string FLUID = "viscosity 1 compressibility 1 density 1 permeability 1 initial 5";
 }    // namespace
 
-TEST(RestartMismatch, FluidStateOfAnotherGridIsRefusedNamingBothGrids)
+namespace {
+
+void another_grid_is_refused(Accel accel)
 {
-  for (Accel accel : {Accel::none, Accel::kokkos}) {
-    const std::string file = accel == Accel::none ? "pw_mismatch.restart" : "pw_mismatch_kk.restart";
-    {
-      Lammps l(accel);
-      l.commands(BOX);
-      l.command("fix fl all darcy/pressure grid 2 2 4 " + FLUID);
-      l.command("run 3");
-      l.command("write_restart " + file);
-    }
+  const std::string file = accel == Accel::none ? "pw_mismatch.restart" : "pw_mismatch_kk.restart";
+  {
     Lammps l(accel);
-    l.command("read_restart " + file);
-    pwtest::expect_error(l, "fix fl all darcy/pressure grid 2 2 5 " + FLUID,
-                         "the grid of the restart file (2x2x4 cells of 0.5 x 0.5 x 0.25 from (0, 0, 0)) "
-                         "differs from this command's (2x2x5 cells of 0.5 x 0.5 x 0.2 from (0, 0, 0))");
-    std::remove(file.c_str());
+    l.commands(BOX);
+    l.command("fix fl all darcy/pressure grid 2 2 4 " + FLUID);
+    l.command("run 3");
+    l.command("write_restart " + file);
   }
+  Lammps l(accel);
+  l.command("read_restart " + file);
+  pwtest::expect_error(l, "fix fl all darcy/pressure grid 2 2 5 " + FLUID,
+                       "the grid of the restart file (2x2x4 cells of 0.5 x 0.5 x 0.25 from (0, 0, 0)) "
+                       "differs from this command's (2x2x5 cells of 0.5 x 0.5 x 0.2 from (0, 0, 0))");
+  std::remove(file.c_str());
 }
+
+}    // namespace
+
+PW_TEST_CPU_AND_KOKKOS(RestartMismatch, FluidStateOfAnotherGridIsRefusedNamingBothGrids,
+                       another_grid_is_refused)
 
 TEST(RestartMismatch, FluidStateOfTheSameGridCarriesOn)
 {
