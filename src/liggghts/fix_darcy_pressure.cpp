@@ -171,6 +171,12 @@ std::string FixDarcyPressure::group_name() const
   return group->names[igroup];
 }
 
+int FixDarcyPressure::group_bit(const std::string &name)
+{
+  const int id = group->find(name.c_str());
+  return id < 0 ? 0 : group->bitmask[id];
+}
+
 void FixDarcyPressure::stop(const std::string &message)
 {
   error_all(lmp, FLERR, message);

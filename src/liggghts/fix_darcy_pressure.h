@@ -41,6 +41,7 @@ class FixDarcyPressure : public LAMMPS_NS::Fix, protected porewater::FluidHost {
   bool grains_reordered_since(long long step) override;
   long long first_nonfinite_grain() override;
   std::string group_name() const override;
+  int group_bit(const std::string &name) override;
   void stop(const std::string &message) override;
   void stop_here(const std::string &message) override;
   void warn(const std::string &message) override;

@@ -43,21 +43,23 @@ const std::string empty_box = "units lj\natom_style sphere\nboundary p p f\n"
                               "region box block 0 2 0 3 0 10\ncreate_box 1 box\ntimestep 0.01\n";
 
 // The stack resting on its held bottom layer, damped, under wall w at `stress` (mass one
-// per column of grains, kn 1e4, damping 100).
-inline std::string wall_on_stack(const std::string &stress, int columns)
+// per column of grains, kn 1e4, damping 100, and the wall's further `options`).
+inline std::string wall_on_stack(const std::string &stress, int columns,
+                                 const std::string &options = "")
 {
   return "fix hold bottom setforce 0 0 0\nfix integrate all nve/sphere\n"
          "fix damp mobile viscous 20\n"
          "fix w all wall/stress z auto stress " + stress + " mass " + std::to_string(columns) +
-      " kn 1e4 damping 100\n";
+      " kn 1e4 damping 100 " + options + "\n";
 }
 
 // the 3 × 3 × 4 stack under the wall: S = 10 on 9 columns of 4 springs in series
 // (kn = 1e4) compresses each contact by S/kn = 1e-3
 const double STACK_STRESS = 10.0, STACK_KN = 1.0e4;
-inline std::string loaded_stack(const std::string &stress = "10")
+inline std::string loaded_stack(const std::string &stress = "10", const std::string &options = "")
 {
-  return cubic_stack(3, 3, 4, 8.0, STACK_KN) + "timestep 5e-4\n" + wall_on_stack(stress, 9);
+  return cubic_stack(3, 3, 4, 8.0, STACK_KN) + "timestep 5e-4\n" +
+      wall_on_stack(stress, 9, options);
 }
 
 // a stress that keeps the loaded stack ringing: a moving wall in contact. Written with

@@ -112,6 +112,9 @@ StyleCase fix_darcy_pressure()
       {fix + unit + " damping 1", "unknown keyword 'damping' (allowed: grid, viscosity,"},
       {"fix bad all darcy/pressure grid 2 0 4" + unit, "grid expects an integer >= 1, got '0'"},
       {fix + unit + " interpolate always", "interpolate expects step or fluid, got 'always'"},
+      {fix + unit + " novertical", "novertical expects a group ID, but the command ends there"},
+      // groups are looked up when the run starts
+      {"run 0", "novertical group nope does not exist", fix + unit + " novertical nope\n"},
       // variables are checked when the run starts
       {"run 0", "variable nowhere for top does not exist", fix + unit + " top v_nowhere\n"},
       {"run 0", "variable atomic for ztop is not equal-style",
@@ -123,9 +126,11 @@ StyleCase fix_darcy_pressure()
   return c;
 }
 
-StyleCase fix_wall_stress()
+// `options`: the wall's dashpot keywords, on the /kk and MPI scenes
+StyleCase fix_wall_stress(const std::string &name, const std::string &kokkos_options,
+                          const std::string &mpi_options)
 {
-  StyleCase c = named("FixWallStress", "wall/stress", "w", 1.0);
+  StyleCase c = named(name, "wall/stress", "w", 1.0);
   // /kk: the same arithmetic per grain, sums in another order; MPI: reductions and neighbor
   // lists in another order. Round-off either way, which the damped stack does not amplify
   c.observables = {
@@ -133,15 +138,17 @@ StyleCase fix_wall_stress()
       value("f_w[2]", 1e-10, 1e-10).above(1e-4),      // its velocity: the stack still rings
       value("f_w[3]", 1e-9, 1e-9),                    // the stress of the grains, of order 10
       value("f_w[4]", 0.0, 0.0),                      // applied: v_s of the step, exact
+      value("f_w[5]", 1e-9, 1e-9),                    // the grain dashpots' share of 3
+      value("f_w[6]", 1e-9, 1e-9),                    // the plate dashpot, per area
       per_atom("x", 1e-12, 1e-12),
   };
   // the stack under an oscillating stress, still ringing: a moving wall in contact
   const std::string stack = oscillating_stress +
       cubic_stack(3, 3, 4, 8.0, STACK_KN) + "timestep 5e-4\n";
-  const std::string wall = wall_on_stack("v_s", 9);
+  const std::string wall = wall_on_stack("v_s", 9, kokkos_options);
   c.kokkos = {stack, wall + "fix_modify w virial yes\n", 3000};
   c.mpi = {oscillating_stress + cubic_stack(6, 6, 5, 9.0) + "timestep 5e-4\n",
-           wall_on_stack("v_s", 36), 1000};
+           wall_on_stack("v_s", 36, mpi_options), 1000};
   // `auto` is ignored after read_restart: the file holds the wall's position, velocity and force
   c.restart = {{stack, wall, 1500},
                "newton off\n",
@@ -161,7 +168,8 @@ StyleCase fix_wall_stress()
       {fix + "z 8 stress 0.5 mass 6 kn 0", "kn expects a finite number > 0, got '0'"},
       {fix + "z 8 stress 0.5 mass 6 kn 100 damping -1", "damping expects a finite number >= 0, got '-1'"},
       {fix + "z 8 stress 0.5 mass 6 kn 100 wiggle 1",
-       "unknown keyword 'wiggle' (allowed: z, stress, mass, kn, damping)"},
+       "unknown keyword 'wiggle' (allowed: z, stress, mass, kn, damping, damping_velocity, "
+       "plate_damping)"},
       {fix + "z 8 stress v_nope mass 6 kn 100\nrun 0", "variable nope for stress does not exist"},
       {"variable perat atom x\n" + fix + "z 8 stress v_perat mass 6 kn 100\nrun 0",
        "variable perat for stress is not equal-style"},
@@ -250,8 +258,18 @@ std::vector<StyleCase> cases()
       {"fix t all nve/sphere/ty3 corrector", "corrector expects yes or no, but the command ends there"},
       {"fix t all nve/sphere/ty3 corrector maybe", "corrector expects yes or no, got 'maybe'"},
   };
-  return {pair_linear_coulomb(), fix_darcy_pressure(), fix_wall_stress(), fix_shear_stress(), ty3,
-          corrected};
+  // the original's lab-frame grain dashpot and a dashpot on the plate itself
+  StyleCase dashpots = fix_wall_stress("FixWallStressDashpots",
+                                       "damping_velocity absolute plate_damping 300",
+                                       "damping_velocity absolute plate_damping 1000");
+  const std::string fix = "fix w all wall/stress z 8 stress 0.5 mass 6 kn 100 ";
+  dashpots.bad_inputs = {
+      {fix + "damping_velocity lab", "damping_velocity expects relative or absolute, got 'lab'"},
+      {fix + "plate_damping -2", "plate_damping expects a finite number >= 0, got '-2'"},
+      {fix + "plate_damping soft", "plate_damping expects a finite number >= 0, got 'soft'"},
+  };
+  return {pair_linear_coulomb(), fix_darcy_pressure(), fix_wall_stress("FixWallStress", "", ""),
+          dashpots, fix_shear_stress(), ty3, corrected};
 }
 
 }    // namespace

@@ -209,6 +209,8 @@ DARCY_BAD_INPUT = [
      "grid expects an integer >= 1, got '0'"),
     ("no_variable", COLUMN + FIX + UNIT_FLUID + " top v_nowhere\nrun 0",
      "fix darcy/pressure: variable nowhere for top does not exist"),
+    ("novertical_group", COLUMN + FIX + UNIT_FLUID + " novertical nope\nrun 0",
+     "fix darcy/pressure bad: novertical group nope does not exist"),
     ("atom_variable", COLUMN + "variable atomic atom x\n" + FIX + UNIT_FLUID + " ztop v_atomic\nrun 0",
      "fix darcy/pressure: variable atomic for ztop is not equal-style"),
     ("not_converged", COLUMN + FIX + UNIT_FLUID + " initial 1.0 tol 1e-14 maxiter 1\n"
@@ -326,7 +328,10 @@ WALL_BAD_INPUT = [
     ("wall_z", WALL_BOX + WALL + "z top stress 0.5 mass 6 kn 100",
      "z expects auto or a finite number, got 'top'"),
     ("wall_keyword", WALL_BOX + WALL + "z 8 stress 0.5 mass 6 kn 100 wiggle 1",
-     "unknown keyword 'wiggle' (allowed: z, stress, mass, kn, damping)"),
+     "unknown keyword 'wiggle' (allowed: z, stress, mass, kn, damping, damping_velocity, "
+     "plate_damping)"),
+    ("wall_damping_velocity", WALL_BOX + WALL + "z 8 stress 0.5 mass 6 kn 100 damping_velocity lab",
+     "damping_velocity expects relative or absolute, got 'lab'"),
     ("wall_variable", WALL_BOX + WALL + "z 8 stress v_nope mass 6 kn 100\nrun 0",
      "Fix wall/stress: variable nope for stress does not exist"),
     ("wall_auto", WALL_BOX + WALL + "z auto stress 1 mass 6 kn 100\nrun 0",

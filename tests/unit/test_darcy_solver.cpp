@@ -404,6 +404,36 @@ TEST(DarcySolver, GrainAdvectionTermUsesMeanVelocity)
   EXPECT_NEAR(s.pressure()[middle], expected, 1e-9 * expected);
 }
 
+TEST(DarcySolver, AdvectionAtTheTopActiveLayerIgnoresTheCellsAboveTheTop)
+{
+  // A uniform bed (phi 0.4) in layers 0-2 below ztop, moving up at w, under layers 3-4
+  // that are beyond the top face (the wall and the void above: phi 0.8). Inside the bed
+  // grad phi = 0, so v.grad phi adds nothing anywhere: p stays exactly 0 and the grain
+  // source of the balance is 0. A gradient taken across the top face from the cell above
+  // would give the top layer the spurious forcing -w (0.8-0.4)/(2 dz)/(beta phi (1-phi)).
+  const GridGeom g = column(5, 0.5);
+  DarcyParams params = unit_diffusivity();
+  params.kmax = 0.0;
+  params.kc = 1e-12;  // nearly impermeable: a spurious source would stay where it is made
+  for (const DarcyParams::Top top : {DarcyParams::Top::Dirichlet, DarcyParams::Top::NoFlow}) {
+    params.top = top;
+    DarcySolver s(g, params);
+    const double w = 0.3, vcell = cell_volume(g);
+    s.clear_deposits();
+    for (int k = 0; k < 5; ++k) {
+      const double solid = (1.0 - (k < 3 ? 0.4 : 0.8)) * vcell;
+      s.solid_volume()[k] = solid;
+      s.solid_momentum()[3 * k + 2] = solid * w;
+    }
+    s.update_porosity();
+    const double z_top = 0.32;  // centres 0.05 ... 0.45: layers 0-2 active
+    ASSERT_TRUE(s.step(0.1, 0.0, z_top).converged);
+    ASSERT_EQ(s.active_layers(), 3);
+    EXPECT_EQ(s.balance().grains, 0.0);
+    for (int k = 0; k < 5; ++k) EXPECT_EQ(s.pressure()[k], 0.0) << "layer " << k;
+  }
+}
+
 TEST(DarcySolver, DphiDtFromDepositsAndRestart)
 {
   GridGeom g{0, 0, 0, 0.1, 0.1, 0.1, 3, 3, 4};

@@ -42,6 +42,56 @@ TEST(WallContact, DampingActsOnTheVelocityRelativeToTheWall)
   EXPECT_NEAR(released.energy, 0.05, 1e-15);
 }
 
+TEST(WallContact, AbsoluteDampingActsOnTheLabFrameVelocity)
+{
+  using porewater::WALL_DAMPING_ABSOLUTE;
+  const double kn = 1000.0, gamma = 20.0;
+  // a resting wall: the same as the relative form
+  EXPECT_NEAR(wall_contact(1.49, 0.5, 0.1, 1.98, 0.0, kn, gamma, WALL_DAMPING_ABSOLUTE).force_z,
+              -12.0, 1e-12);
+  // a wall coming down at 0.1 onto a resting grain: no damping (the relative form: -12)
+  EXPECT_NEAR(wall_contact(1.49, 0.5, 0.0, 1.98, -0.1, kn, gamma, WALL_DAMPING_ABSOLUTE).force_z,
+              -10.0, 1e-12);
+  // grain and wall rising together at 0.3: damped by -gamma 0.3 although they do not
+  // move apart (the relative form: none)
+  const WallContact together =
+      wall_contact(1.49, 0.5, 0.3, 1.98, 0.3, kn, gamma, WALL_DAMPING_ABSOLUTE);
+  EXPECT_NEAR(together.force_z, -16.0, 1e-12);
+  EXPECT_NEAR(together.damping_z, -6.0, 1e-12);
+  // the pair dissipates gamma v_z (v_z - v_wall): nothing here, although each feels 6
+  const double reaction = -together.force_z;    // what the fix adds to the wall
+  EXPECT_NEAR(together.damping_z * 0.3 + (-together.damping_z) * 0.3, 0.0, 1e-15);
+  EXPECT_NEAR(reaction, 16.0, 1e-12);
+  // grain and wall sinking together: the dashpot lifts the grain's push off the wall, but
+  // it is clipped at zero
+  EXPECT_NEAR(wall_contact(1.49, 0.5, -0.3, 1.98, -0.3, kn, gamma, WALL_DAMPING_ABSOLUTE).force_z,
+              -4.0, 1e-12);
+  const WallContact released =
+      wall_contact(1.49, 0.5, -1.0, 1.98, -1.0, kn, gamma, WALL_DAMPING_ABSOLUTE);
+  EXPECT_EQ(released.force_z, 0.0);
+  EXPECT_NEAR(released.damping_z, 10.0, 1e-12);    // cancels the spring exactly
+  EXPECT_NEAR(released.energy, 0.05, 1e-15);
+}
+
+TEST(WallContact, DampingShareIsTheForceLessTheSpring)
+{
+  const double kn = 1000.0, gamma = 20.0;
+  for (const int form : {porewater::WALL_DAMPING_RELATIVE, porewater::WALL_DAMPING_ABSOLUTE}) {
+    const WallContact c = wall_contact(1.49, 0.5, 0.1, 1.98, -0.05, kn, gamma, form);
+    EXPECT_NEAR(c.damping_z, c.force_z + 10.0, 1e-12) << form;
+    EXPECT_LT(c.damping_z, 0.0) << form;    // approaching: the dashpot adds to the push
+    EXPECT_EQ(wall_contact(1.49, 0.5, 0.1, 1.98, -0.05, kn, 0.0, form).damping_z, 0.0) << form;
+    EXPECT_EQ(wall_contact(1.0, 0.5, 0.1, 1.98, -0.05, kn, gamma, form).damping_z, 0.0) << form;
+  }
+}
+
+TEST(WallContact, PlateDashpotOpposesTheWallVelocity)
+{
+  EXPECT_DOUBLE_EQ(porewater::plate_damping_force(0.25, 400.0), -100.0);
+  EXPECT_DOUBLE_EQ(porewater::plate_damping_force(-0.25, 400.0), 100.0);
+  EXPECT_EQ(porewater::plate_damping_force(0.25, 0.0), 0.0);
+}
+
 TEST(ShearPlate, AccelerationIsAppliedPlusResistingForceOverPlateMass)
 {
   EXPECT_DOUBLE_EQ(porewater::plate_acceleration(10.0, 2.0, 0.0, 4.0), 5.0);

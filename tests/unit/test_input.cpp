@@ -53,7 +53,8 @@ TEST(KeywordReader, EveryMessageNamesTheCommandTheKeywordAndWhatItAccepts)
   EXPECT_EQ(message_of({"z", "8", "stress", "1", "mass", "1"}, wall),
             "Illegal fix test command: missing required keyword(s): kn");
   EXPECT_EQ(message_of({"z", "8", "spin", "1"}, wall),
-            "Illegal fix test command: unknown keyword 'spin' (allowed: z, stress, mass, kn, damping)");
+            "Illegal fix test command: unknown keyword 'spin' (allowed: z, stress, mass, kn, damping, "
+            "damping_velocity, plate_damping)");
   auto darcy = [](KeywordReader &in) { parse_darcy(in, 0.0, 1.0); };
   EXPECT_EQ(message_of({"grid", "2", "2", "2", "viscosity", "1", "compressibility", "1", "density",
                         "1", "permeability", "1", "top", "open"},

@@ -242,6 +242,7 @@ struct FluidForceField {
   const double *gradient_table;
   const double *cell_gradient;
   double rho_g[3];
+  int horizontal_only_bit;    // grains of this group bit get no vertical fluid force (novertical)
 };
 
 // The fluid force on a grain at x with block `block` and weights w (grain_stencil or
@@ -275,7 +276,8 @@ PW_INLINE void deposit_grain(const CouplingGrid &cg, const G &g, const S &stenci
 }
 
 // f += the fluid force on grain i, also held in h; from the stencil its deposit of this
-// step kept (stored) or from its position now. Zero outside the group.
+// step kept (stored) or from its position now; its horizontal part only for the grains of
+// field.horizontal_only_bit. Zero outside the group.
 template <class G, class S, class H>
 PW_INLINE void apply_fluid_force(const CouplingGrid &cg, const FluidForceField &field,
                                  const G &g, const S &stencils, const H &held, const int groupbit,
@@ -294,6 +296,7 @@ PW_INLINE void apply_fluid_force(const CouplingGrid &cg, const FluidForceField &
       block = grain_stencil(cg, x0, x1, x2, w);
     }
     grain_fluid_force(cg, field, block, weights, x0, x1, x2, sphere_volume(g.radius(i)), f);
+    if (g.mask(i) & field.horizontal_only_bit) f[2] = 0.0;
     g.f(i, 0) += f[0];
     g.f(i, 1) += f[1];
     g.f(i, 2) += f[2];

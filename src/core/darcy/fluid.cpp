@@ -87,7 +87,8 @@ DarcyFluid::DarcyFluid(const DarcySettings &settings, const GridGeom &geom, cons
   field_ = FluidForceField{gradient_table_.data(), solver_->pressure_gradient().data(),
                            {settings.density * settings.gravity[0],
                             settings.density * settings.gravity[1],
-                            settings.density * settings.gravity[2]}};
+                            settings.density * settings.gravity[2]},
+                           0};
 }
 
 DarcyFluid::~DarcyFluid()
@@ -144,6 +145,13 @@ std::string DarcyFluid::box_mismatch(const HostBox &box) const
 void DarcyFluid::setup(FluidHost &host, GrainBackend &grains, const GrainStep &now)
 {
   porosity_warned_ = false;
+  // `novertical GROUP`, looked up at every setup: groups may be redefined between runs
+  if (!settings_.novertical_group.empty()) {
+    field_.horizontal_only_bit = host.group_bit(settings_.novertical_group);
+    if (!field_.horizontal_only_bit)
+      host.stop("fix darcy/pressure " + id_ + ": novertical group " + settings_.novertical_group +
+                " does not exist");
+  }
   if (host.is_root() && settings_.profile_every && !profile_) {
     profile_ = std::fopen(settings_.profile_path.c_str(), "w");
     if (!profile_)
@@ -354,6 +362,8 @@ double DarcyFluid::vector(int n) const
       return balance.grains;
     case 10:
       return balance.allowance;
+    case 11:
+      return solver_->active_layers();
     default:
       return 0.0;
   }

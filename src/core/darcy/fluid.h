@@ -57,6 +57,8 @@ class FluidHost {
   // smallest ID over all ranks of a grain of the group with a non-finite x or v
   virtual long long first_nonfinite_grain() = 0;
   virtual std::string group_name() const = 0;    // the fix's group, for messages
+  // the bit of the group called `name`, 0 if there is none
+  virtual int group_bit(const std::string &name) = 0;
   // called on every rank with the same message: stop the run (error->all)
   virtual void stop(const std::string &message) = 0;
   // called on one rank only: stop the run from there (error->one)
@@ -88,7 +90,7 @@ class GrainBackend {
 
 class DarcyFluid {
  public:
-  static constexpr int VECTOR_SIZE = 11;    // compute_vector's values, doc/fix_darcy_pressure.rst
+  static constexpr int VECTOR_SIZE = 12;    // compute_vector's values, doc/fix_darcy_pressure.rst
   static const RestartFormat RESTART;
 
   // Throws InputError when the grid cannot be held (int index overflow, more memory than

@@ -185,8 +185,11 @@ StepResult DarcySolver::step(double dt, double p_top, double z_top, double p_bot
         const int c = cell_index(g, i, j, kz);
         const int xm = cell_index(g, wrap_index(i - 1, g.nx), j, kz);
         const int ym = cell_index(g, i, wrap_index(j - 1, g.ny), kz);
-        // grad phi: central, zero gradient (mirrored ghost) at the grid's bottom and top
-        const int below = kz > 0 ? c - nxy_ : c, above = kz < g.nz - 1 ? c + nxy_ : c;
+        // grad phi: central, zero gradient (mirrored ghost) at the bottom and at the top
+        // active layer's Dirichlet face: the cell beyond that face is outside the bed the
+        // fluid is solved in (it holds the wall and the void above), so its phi is not the
+        // bed's; mirror it as at the impermeable bottom
+        const int below = kz > 0 ? c - nxy_ : c, above = kz < active_layers_ - 1 ? c + nxy_ : c;
         const double grad_phi[3] = {
             (phi[cell_index(g, wrap_index(i + 1, g.nx), j, kz)] - phi[xm]) / (2.0 * g.dx),
             (phi[cell_index(g, i, wrap_index(j + 1, g.ny), kz)] - phi[ym]) / (2.0 * g.dy),

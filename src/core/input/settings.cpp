@@ -49,8 +49,13 @@ WallStressSettings parse_wall_stress(KeywordReader &in)
       have_kn = true;
     } else if (key == "damping") {
       s.damping = in.non_negative();
+    } else if (key == "damping_velocity") {
+      s.damping_velocity = in.choice({"relative", "absolute"});
+    } else if (key == "plate_damping") {
+      s.plate_damping = in.non_negative();
     } else {
-      in.unknown_keyword({"z", "stress", "mass", "kn", "damping"});
+      in.unknown_keyword({"z", "stress", "mass", "kn", "damping", "damping_velocity",
+                          "plate_damping"});
     }
   }
   in.require({"z", "stress", "mass", "kn"}, {have_z, have_stress, have_mass, have_kn});
@@ -146,6 +151,8 @@ DarcySettings parse_darcy(KeywordReader &in, double box_zlo, double box_zhi)
       s.params.tol_abs = in.non_negative();
     } else if (key == "maxiter") {
       s.params.maxiter = in.count();
+    } else if (key == "novertical") {
+      s.novertical_group = in.word("a group ID");
     } else if (key == "every") {
       s.every = in.count();
     } else if (key == "interpolate") {
@@ -162,8 +169,8 @@ DarcySettings parse_darcy(KeywordReader &in, double box_zlo, double box_zhi)
     } else {
       in.unknown_keyword({"grid", "viscosity", "compressibility", "density", "permeability",
                           "top", "ztop", "bottom", "initial", "gravity", "porosity", "kmax",
-                          "tol", "atol", "maxiter", "every", "interpolate", "zhi", "profile",
-                          "vtk"});
+                          "tol", "atol", "maxiter", "novertical", "every", "interpolate", "zhi",
+                          "profile", "vtk"});
     }
   }
   in.require({"grid", "viscosity", "compressibility", "density", "permeability"},

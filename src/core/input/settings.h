@@ -25,6 +25,7 @@ LinearCoulombSettings parse_linear_coulomb(KeywordReader &in);
 ContactCoeffs parse_linear_coulomb_coeffs(KeywordReader &in);
 
 // fix ID group wall/stress z Z0|auto stress S|v_name mass M kn KN [damping GAMMA]
+//   [damping_velocity relative|absolute] [plate_damping GAMMA_P]
 struct WallStressSettings {
   double z = 0.0;
   bool z_auto = false;          // put the wall on the highest grain at the first setup
@@ -32,6 +33,8 @@ struct WallStressSettings {
   double mass = 0.0;
   double kn = 0.0;
   double damping = 0.0;         // gamma of the grain-wall dashpot
+  int damping_velocity = 0;     // WALL_DAMPING_RELATIVE (0) or _ABSOLUTE (1): what it damps
+  double plate_damping = 0.0;   // gamma_p of a dashpot on the wall's own velocity
 };
 WallStressSettings parse_wall_stress(KeywordReader &in);
 
@@ -64,6 +67,9 @@ struct DarcySettings {
   NumberOrVariable bottom;           // Dirichlet bottom pressure, if bottom_dirichlet
   bool bottom_dirichlet = false;
   double initial_pressure = 0.0;
+  // the grains of this group get no vertical fluid force (buoyancy included), as the
+  // original program's shear plate; empty: none
+  std::string novertical_group;
   int every = 1;                     // fluid step every this many grain steps
   bool interpolate_every_step = true;  // false: grain forces held between fluid steps
   int profile_every = 0;             // 0: no profile file

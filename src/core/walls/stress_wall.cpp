@@ -5,30 +5,38 @@
 
 namespace porewater {
 
+static_assert(WALL_DAMPING_RELATIVE == 0 && WALL_DAMPING_ABSOLUTE == 1,
+              "parse_wall_stress reads damping_velocity as the index of relative|absolute");
+
 const RestartFormat StressWall::RESTART{RestartStyle::WallStress, 1, "fix wall/stress"};
 
 StressWall::StressWall(const WallStressSettings &settings, const std::string &id) :
     settings_(settings), id_(id), z_wall_(settings.z), v_wall_(0.0), wall_force_(0.0),
-    grain_force_(0.0), applied_stress_(0.0), spring_energy_(0.0), z_auto_(settings.z_auto)
+    grain_force_(0.0), grain_damping_(0.0), plate_damping_(0.0), applied_stress_(0.0), spring_energy_(0.0), z_auto_(settings.z_auto)
 {
 }
 
-// The explicit dashpot on a grain is stable only for damping·Δt/m < 2; near that bound the
-// contact chatters, so warn well before it.
+// An explicit dashpot γ on a mass m is stable only for γ·Δt/m < 2; near that bound it
+// chatters, so warn well before it: the grain–wall one on the lightest grain, the plate's
+// on the wall.
 void StressWall::init(StressWallHost &host, double dt)
 {
-  const double gamma = settings_.damping;
-  if (gamma <= 0.0) return;
-  const double lightest = host.min_over_ranks(host.lightest_grain());
-  const double ratio = gamma * dt / lightest;
-  if (!(ratio > 0.5)) return;
-  char text[16];
-  std::snprintf(text, sizeof(text), "%.3g", ratio);
-  host.warn("Fix wall/stress: damping " + round_trip_text(gamma) + " with timestep " +
-            round_trip_text(dt) + " and lightest grain mass " + round_trip_text(lightest) +
-            " gives damping*dt/m = " + text +
-            "; the explicit dashpot chatters above ~0.5 and is unstable above 2: lower "
-            "damping or the timestep");
+  auto warn = [&](const char *keyword, double gamma, const char *which, double mass) {
+    const double ratio = gamma * dt / mass;
+    if (!(ratio > 0.5)) return;
+    char text[16];
+    std::snprintf(text, sizeof(text), "%.3g", ratio);
+    host.warn(std::string("Fix wall/stress: ") + keyword + " " + round_trip_text(gamma) +
+              " with timestep " + round_trip_text(dt) + " and " + which + " " +
+              round_trip_text(mass) + " gives " + keyword + "*dt/m = " + text +
+              "; the explicit dashpot chatters above ~0.5 and is unstable above 2: lower " +
+              keyword + " or the timestep");
+  };
+  if (settings_.plate_damping > 0.0)
+    warn("plate_damping", settings_.plate_damping, "wall mass", settings_.mass);
+  if (settings_.damping <= 0.0) return;
+  warn("damping", settings_.damping, "lightest grain mass",
+       host.min_over_ranks(host.lightest_grain()));
 }
 
 void StressWall::setup(StressWallHost &host, long long step)
@@ -52,12 +60,16 @@ void StressWall::initial_integrate(double dt)
 void StressWall::post_force(StressWallHost &host, long long step)
 {
   applied_stress_ = host.stress_now();
-  double sums[3];
+  double sums[4];
   host.contact_sums(sums);
-  host.sum_over_ranks(sums, 2);
-  grain_force_ = sums[0];
-  spring_energy_ = sums[1];
-  wall_force_ = grain_force_ - applied_stress_ * host.box().area;
+  double totals[3] = {sums[0], sums[1], sums[3]};    // the virial, sums[2], stays per rank
+  host.sum_over_ranks(totals, 3);
+  grain_force_ = totals[0];
+  spring_energy_ = totals[1];
+  grain_damping_ = totals[2];
+  // v_wall_ is the half-step velocity here, as the grains' are for their contact forces
+  plate_damping_ = plate_damping_force(v_wall_, settings_.plate_damping);
+  wall_force_ = grain_force_ - applied_stress_ * host.box().area + plate_damping_;
   check_in_box(host, step);
 }
 
@@ -85,7 +97,8 @@ void StressWall::check_in_box(StressWallHost &host, long long step)
               round_trip_text(top));
 }
 
-// vector: 1 z_wall, 2 v_wall, 3 grain force per area (effective normal stress), 4 applied S
+// vector: 1 z_wall, 2 v_wall, 3 grain force per area (effective normal stress), 4 applied S,
+// 5 the grain–wall dashpots' share of 3, 6 the plate dashpot's force per area on the wall
 double StressWall::vector(int n, double area) const
 {
   switch (n) {
@@ -95,8 +108,12 @@ double StressWall::vector(int n, double area) const
       return v_wall_;
     case 2:
       return grain_force_ / area;
-    default:
+    case 3:
       return applied_stress_;
+    case 4:
+      return grain_damping_ / area;
+    default:
+      return plate_damping_ / area;
   }
 }
 

@@ -2,7 +2,8 @@
 // frictionless horizontal plane of mass M moving in z under the grains' contact forces and
 // an applied normal stress S(t), by velocity Verlet in step with the grains:
 //   initial_integrate  v_w += ½Δt F_w/M,  z_w += Δt v_w
-//   post_force         grain–wall contacts at the new z_w; F_w = Σ contact forces − S·L_x·L_y
+//   post_force         grain–wall contacts at the new z_w;
+//                      F_w = Σ contact forces − S·L_x·L_y − γ_p v_w
 //   final_integrate    v_w += ½Δt F_w/M
 // A host's fix (LAMMPS, LIGGGHTS) gives it a StressWallHost and forwards its hooks; every
 // rank holds the same wall.
@@ -30,7 +31,7 @@ class StressWallHost {
  public:
   virtual double stress_now() = 0;    // S at this step (a constant or an equal-style variable)
   // the contacts of this rank's grains with the wall (StressWall::contacts): forces added
-  // to the grains, sums = {force on the wall, spring energy, zz virial}
+  // to the grains, sums = {force on the wall, spring energy, zz virial, dashpot share}
   virtual void contact_sums(double *sums) = 0;
   virtual void sum_over_ranks(double *values, int n) = 0;    // on every rank
   virtual double max_over_ranks(double value) = 0;
@@ -65,7 +66,8 @@ template <class G> double lightest_grain(const G &g, int n, int groupbit)
 
 class StressWall {
  public:
-  static constexpr int VECTOR_SIZE = 4;    // z_w, v_w, grain force per area, S
+  // z_w, v_w, grain force per area, S, the grain dashpots' share of it, plate dashpot per area
+  static constexpr int VECTOR_SIZE = 6;
   static const RestartFormat RESTART;
 
   // `id` names the fix in messages
@@ -75,7 +77,7 @@ class StressWall {
   bool placement_pending() const { return z_auto_; }
 
   // the hooks of the fix
-  void init(StressWallHost &host, double dt);      // warns of a dashpot near its limit
+  void init(StressWallHost &host, double dt);      // warns of dashpots near their limit
   void setup(StressWallHost &host, long long step);    // `z auto`, then the forces
   void initial_integrate(double dt);
   void post_force(StressWallHost &host, long long step);
@@ -87,7 +89,8 @@ class StressWall {
                                           int groupbit) const
   {
     return WallContacts<G, PerAtomVirial>{grains, per_atom, groupbit, z_wall_, v_wall_,
-                                          settings_.kn, settings_.damping};
+                                          settings_.kn, settings_.damping,
+                                          settings_.damping_velocity};
   }
 
   double scalar() const { return spring_energy_; }
@@ -105,6 +108,8 @@ class StressWall {
   double z_wall_, v_wall_;
   double wall_force_;        // on the wall at the last force evaluation: grain_force − S·L_x·L_y
   double grain_force_;       // sum of the grains' contact forces on the wall (≥ 0)
+  double grain_damping_;     // the grain–wall dashpots' share of grain_force_
+  double plate_damping_;     // the plate dashpot's force on the wall, −γ_p v_w
   double applied_stress_;    // S at the last force evaluation
   double spring_energy_;     // ½ k_n δ² summed over the grain–wall contacts
   bool z_auto_;              // until `z auto` has put the wall on the highest grain
