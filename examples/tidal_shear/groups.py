@@ -1,0 +1,102 @@
+#!/usr/bin/python3
+"""The dimensionless groups of the tidal shear experiment: Table S1, the reduced case used
+before (1 Hz, beta_f x100) and the reduced case of in.params (README.md, "The reduced case
+and its scaling").
+
+    /usr/bin/python3 groups.py [--markdown]
+
+H (top of the highest grain over the floor) and phi (1 - grain volume/(L_x L_y H)) of the
+reduced cases come from their consolidated states; Table S1's are the supplement's 0.47 m at
+phi 0.38. The groups of the plate mode use the bed's vertical stiffness under the plate,
+K_v = m_w (2 pi f_p)^2, with the plate-mode frequency f_p measured by
+bench/wall_damping.py on the shipped state (83 Hz); for the other cases K_v is scaled with
+k_n (a packing of linear springs has its moduli proportional to k_n/d at a given geometry)
+and with L_x L_y/H.
+"""
+import math
+import sys
+
+COMMON = dict(r=0.01, rho=2600.0, rho_f=1000.0, g=9.81, sigma0=80e3, amp=70e3, tau=10e3,
+              kc=3.5e-13, eps=0.07)
+# constrained modulus of the bed measured on the shipped reduced state, over k_n/d
+MODULUS_OVER_KN_D = 0.45
+CASES = {
+    "Table S1": dict(COMMON, lx=0.52, ly=0.26, kn=1.16e9, beta=1.426e-8, mu_f=1.040e-7,
+                     f=0.2, dz=0.55 / 6, H=0.47, phi=0.38, mass_factor=1.0, gamma_w=1e3,
+                     gamma_p=0.0),
+    # the bed shipped before (consolidated_0.data until the faithful reduced case)
+    "reduced before": dict(COMMON, lx=0.26, ly=0.13, kn=1.16e7, beta=1.426e-6, mu_f=8.3e-10,
+                           f=1.0, dz=0.317 / 4, H=0.2567, phi=0.4206, mass_factor=1.0,
+                           gamma_w=1e3, gamma_p=0.0),
+    # in.params (default): the shipped consolidated_0.data
+    "reduced": dict(COMMON, lx=0.26, ly=0.13, kn=1.16e7, beta=1.426e-8, mu_f=1.93e-7,
+                    f=0.4, dz=(0.2383 + 0.06) / 4, H=0.2383, phi=0.3759, mass_factor=0.493,
+                    gamma_w=100.0, gamma_p=0.0),
+}
+
+
+def groups(c):
+    d = 2 * c["r"]
+    m = c["rho"] * 4.0 / 3.0 * math.pi * c["r"] ** 3
+    dt = c["eps"] / math.sqrt(c["kn"] / m)
+    T = 1.0 / c["f"]
+    H, phi = c["H"], c["phi"]
+    area = c["lx"] * c["ly"]
+    mass_w = c["mass_factor"] * c["sigma0"] * area / c["g"]
+    k = c["kc"] * phi ** 3 / (1 - phi) ** 2
+    D = k / (c["beta"] * phi * c["mu_f"])
+    smax = c["sigma0"] + c["amp"]
+    Z = 4.5                                              # coordination of the loaded bed
+    F_mean = math.pi * d * d * smax / (Z * (1 - phi))    # mean contact force at sigma_max
+    M_s = MODULUS_OVER_KN_D * c["kn"] / d
+    K_v = M_s * area / H
+    root = math.sqrt(K_v * mass_w)
+    t_d = H * H / D
+    rho_b = (1 - phi) * c["rho"] + phi * c["rho_f"]
+    omega_p = math.sqrt(K_v / mass_w)
+    g = {}
+    g["eps = dt sqrt(k_n/m)"] = dt * math.sqrt(c["kn"] / m)
+    g["kappa = k_n/(sigma_max d)"] = c["kn"] / (smax * d)
+    g["delta/r at sigma_max (mean contact)"] = F_mean / c["kn"] / c["r"]
+    g["D T/H^2"] = D * T / H ** 2
+    g["mu_f H^2/(k T sigma0)"] = c["mu_f"] * H ** 2 / (k * T * c["sigma0"])
+    g["1/(beta_f phi sigma0)"] = 1.0 / (c["beta"] * phi * c["sigma0"])
+    g["beta_f k_n/d"] = c["beta"] * c["kn"] / d
+    g["beta_f phi M_s (M_s = 0.45 k_n/d)"] = c["beta"] * phi * M_s
+    g["t_i/T = d sqrt(rho/sigma0)/T"] = d * math.sqrt(c["rho"] / c["sigma0"]) / T
+    g["Pi_w = m_w H/(A L_x L_y T^2)"] = mass_w * H / (c["amp"] * area * T * T)
+    g["tau/sigma0"] = c["tau"] / c["sigma0"]
+    g["A/sigma0"] = c["amp"] / c["sigma0"]
+    g["(1-phi)(rho-rho_f) g H/sigma0"] = (1 - phi) * (c["rho"] - c["rho_f"]) * c["g"] * H / c["sigma0"]
+    g["wall contact zeta = gamma_w/(2 sqrt(k_n m))"] = c["gamma_w"] / (2 * math.sqrt(c["kn"] * m))
+    g["plate mode omega_p T"] = omega_p * T
+    g["plate mode omega_p H^2/D"] = omega_p * t_d
+    g["plate zeta = gamma_p/(2 sqrt(K_v m_w))"] = c["gamma_p"] / (2 * root)
+    g["drained fluid zeta = mu_f L_x L_y H/(6 k sqrt(K_v m_w))"] = c["mu_f"] * area * H / (6 * k * root)
+    g["elastic crossing/diffusion = H sqrt(rho_b/M_s) D/H^2"] = H * math.sqrt(rho_b / M_s) / t_d
+    g["H/d"] = H / d
+    g["L_x/d"] = c["lx"] / d
+    g["cell dz/d"] = c["dz"] / d
+    g["steps per cycle T/dt"] = T / dt
+    return g
+
+
+def main():
+    names = list(CASES)
+    rows = {n: groups(CASES[n]) for n in names}
+    keys = list(rows[names[0]])
+    if "--markdown" in sys.argv:
+        print("| group | " + " | ".join(names) + " | reduced / Table S1 |")
+        print("|---|" + "---|" * (len(names) + 1))
+        for key in keys:
+            vals = ["%.3g" % rows[n][key] for n in names]
+            ratio = rows["reduced"][key] / rows["Table S1"][key] if rows["Table S1"][key] else float("nan")
+            print("| %s | %s | %.3g |" % (key, " | ".join(vals), ratio))
+    else:
+        print("%-58s" % "" + "".join("%16s" % n for n in names))
+        for key in keys:
+            print("%-58s" % key + "".join("%16.4g" % rows[n][key] for n in names))
+
+
+if __name__ == "__main__":
+    main()
