@@ -26,6 +26,7 @@ complete in --work is not repeated.
 """
 import argparse
 import os
+import subprocess
 import sys
 
 import matplotlib
@@ -166,7 +167,17 @@ def main():
 
 
 def report(rings, cycles):
-    lines = ["# The plate after a slip: ringing and wall damping (bench/wall_damping.py)", ""]
+    commit = subprocess.run(["git", "-C", HERE, "rev-parse", "--short", "HEAD"],
+                            capture_output=True, text=True).stdout.strip()
+    lines = ["# The plate after a slip: ringing and wall damping (bench/wall_damping.py)", "",
+             "`/usr/bin/python3 bench/wall_damping.py --part all` (after scripts/setup.sh; "
+             "source scripts/env.sh), written at commit %s on the 2-core development machine, "
+             "shared with other jobs. Runs already complete in --work are reused: the "
+             "first-cycle runs below were made with the example's inputs of this commit by "
+             "the build before the styles moved onto src/core, whose time series this commit "
+             "reproduces bit for bit (compared over the first 1.4 s of the default run, and "
+             "over the default's 2.25 cycles by bench/fidelity.py's run); the ringdown runs "
+             "by this commit's build." % commit, ""]
     if rings:
         lines += ["## Plate ringdown (bench/in.plate_ringdown: stress step 80 -> 100 kPa, 0.3 s)", "",
                   "| wall damping | f_p (Hz) | zeta |", "|---|---|---|"]

@@ -9,7 +9,7 @@ H (top of the highest grain over the floor) and phi (1 - grain volume/(L_x L_y H
 reduced cases come from their consolidated states; Table S1's are the supplement's 0.47 m at
 phi 0.38. The groups of the plate mode use the bed's vertical stiffness under the plate,
 K_v = m_w (2 pi f_p)^2, with the plate-mode frequency f_p measured by
-bench/wall_damping.py on the shipped state (83 Hz); for the other cases K_v is scaled with
+bench/wall_damping.py on the shipped state (110 Hz); for the other cases K_v is scaled with
 k_n (a packing of linear springs has its moduli proportional to k_n/d at a given geometry)
 and with L_x L_y/H.
 """
@@ -19,7 +19,7 @@ import sys
 COMMON = dict(r=0.01, rho=2600.0, rho_f=1000.0, g=9.81, sigma0=80e3, amp=70e3, tau=10e3,
               kc=3.5e-13, eps=0.07)
 # constrained modulus of the bed measured on the shipped reduced state, over k_n/d
-MODULUS_OVER_KN_D = 0.45
+MODULUS_OVER_KN_D = 0.79
 CASES = {
     "Table S1": dict(COMMON, lx=0.52, ly=0.26, kn=1.16e9, beta=1.426e-8, mu_f=1.040e-7,
                      f=0.2, dz=0.55 / 6, H=0.47, phi=0.38, mass_factor=1.0, gamma_w=1e3,
@@ -62,7 +62,7 @@ def groups(c):
     g["mu_f H^2/(k T sigma0)"] = c["mu_f"] * H ** 2 / (k * T * c["sigma0"])
     g["1/(beta_f phi sigma0)"] = 1.0 / (c["beta"] * phi * c["sigma0"])
     g["beta_f k_n/d"] = c["beta"] * c["kn"] / d
-    g["beta_f phi M_s (M_s = 0.45 k_n/d)"] = c["beta"] * phi * M_s
+    g["beta_f phi M_s (M_s = 0.79 k_n/d)"] = c["beta"] * phi * M_s
     g["t_i/T = d sqrt(rho/sigma0)/T"] = d * math.sqrt(c["rho"] / c["sigma0"]) / T
     g["Pi_w = m_w H/(A L_x L_y T^2)"] = mass_w * H / (c["amp"] * area * T * T)
     g["tau/sigma0"] = c["tau"] / c["sigma0"]
