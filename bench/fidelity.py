@@ -1,0 +1,331 @@
+#!/usr/bin/python3
+"""Does examples/tidal_shear reproduce Damsgaard et al. (2016)? The paper's results, measured
+on the reduced case (examples/tidal_shear/README.md: the groups it keeps).
+
+Part "cycle" (Figure 3): the example for 4 forcing cycles (10 s, 4,672,897 steps) with the
+  pore water (k_c 3.5e-13, the default), dry (fluid 0), and with k_c 3.5e-14 and 3.5e-15
+  (the paper's low-permeability twin). Per cycle: slip onset and end (the top layer's
+  velocity, smoothed over 0.025 s, above / below 1 cm/s), peak and mean slip velocity, slip
+  displacement, dilation during the slip, the smallest coordination number and its phase,
+  the phase of the minimum of N on the grains, min and max of p_mean - p_top (/A); the
+  stacked cycles against phase.
+Part "permeability": from the same runs, slip displacement and onset phase against k_c (and
+  dry) over cycles 2-4, with their cycle-to-cycle spread.
+Part "creep" (Figure S1, the paper's method): from the same tidal cycles, the shear strain
+  rate (top-layer velocity / bed height, from the displacement over 0.05-cycle windows)
+  against tau/N over phases 0.2-0.6 of each cycle while N falls; gamma_dot ~ (tau/N)^n
+  fitted per cycle and pooled, with 95 % intervals.
+
+Usage (after scripts/setup.sh; source scripts/env.sh):
+    /usr/bin/python3 bench/fidelity.py --part cycle|permeability|creep|all [--work DIR] [--jobs N]
+        [--analyse-only]
+Runs whose output is complete in --work are not repeated; the parameters were fixed before
+any run (examples/tidal_shear/in.params). Writes bench/fidelity_results.md (the tables;
+bench/RESULTS_fidelity.md discusses them) and the PNGs bench/fidelity_*.png.
+"""
+import argparse
+import os
+import subprocess
+import sys
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+from scipy import stats
+
+from example_runs import complete, load, prepare, run_lmp
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CYCLES = 4
+PERIOD, AMP, SIGMA0, TAU = 2.5, 70.0e3, 80.0e3, 10.0e3    # examples/tidal_shear/in.params
+DIAMETER, RHO = 0.02, 2600.0
+SLIP_VELOCITY = 1e-2       # m/s: a slip, at least 10x any creep velocity (checked)
+SMOOTH = 0.025             # s: velocity from the displacement over this window
+VARIANTS = {  # name: (label, k_c or None for dry, -var overrides)
+    "wet": ("k_c 3.5e-13 (default)", 3.5e-13, {}),
+    "mid": ("k_c 3.5e-14", 3.5e-14, {"kc": 3.5e-14}),
+    "twin": ("k_c 3.5e-15 (low-k twin)", 3.5e-15, {"kc": 3.5e-15}),
+    "dry": ("dry (fluid 0)", None, {"fluid": 0}),
+}
+
+
+def run_variant(work, name):
+    d = os.path.join(work, "cycle", name)
+    out = os.path.join(d, "timeseries.txt")
+    if complete(out, CYCLES * PERIOD):
+        return name, None
+    prepare(d)
+    start = time.time()
+    cpu = run_lmp(d, "in.tidal_shear", dict(VARIANTS[name][2], cycles=CYCLES))
+    with open(os.path.join(d, "cost.txt"), "w") as f:
+        f.write("%.1f %.1f\n" % (cpu, time.time() - start))
+    return name, cpu
+
+
+def smoothed_velocity(t, x):
+    n = max(1, int(round(SMOOTH / np.median(np.diff(t)))))
+    v = np.full_like(x, np.nan)
+    v[n // 2:len(x) - (n - n // 2)] = (x[n:] - x[:-n]) / (t[n:] - t[:-n])
+    return v
+
+
+def cycle_metrics(c, wet):
+    t, x, z = c["time"], c["x_top"], c["z_wall"]
+    v = smoothed_velocity(t, x)
+    rows = []
+    for k in range(CYCLES):
+        # (the sample at t = 0 precedes the first force evaluation: no grain force on the plate)
+        inside = (t >= k * PERIOD) & (t < (k + 1) * PERIOD) & (t > 0)
+        phase = t[inside] / PERIOD - k
+        vi, xi, zi = v[inside], x[inside], z[inside]
+        creep = (phase > 0.2) & (phase < 0.6)
+        pc, = np.nonzero(creep)
+        v_creep = (xi[pc[-1]] - xi[pc[0]]) / (PERIOD * (phase[pc[-1]] - phase[pc[0]]))
+        r = {"cycle": k + 1, "v_creep": v_creep}
+        # a slip of the cycle before that goes on into this one is not this cycle's
+        slow = np.nonzero(vi <= SLIP_VELOCITY)[0]
+        first_slow = slow[0] if len(slow) else len(vi)
+        fast = first_slow + np.nonzero(vi[first_slow:] > SLIP_VELOCITY)[0]
+        if len(fast):
+            i0 = fast[0]
+            after = np.nonzero(vi[i0:] < SLIP_VELOCITY)[0]
+            i1 = i0 + (after[0] if len(after) else len(vi) - 1 - i0)
+            r.update(onset=phase[i0], end=phase[i1], peak=np.nanmax(vi[i0:i1 + 1]),
+                     ratio=TAU / c["N_applied"][inside][i0],
+                     peak_phase=phase[i0 + int(np.nanargmax(vi[i0:i1 + 1]))],
+                     mean=(xi[i1] - xi[i0]) / (PERIOD * (phase[i1] - phase[i0])),
+                     slip=xi[i1] - xi[i0], dilation=np.max(zi[i0:i1 + 1]) - zi[i0])
+        zc = c["coordination"][inside]
+        r["z_min"], r["z_min_phase"] = zc.min(), phase[np.argmin(zc)]
+        r["n_min_phase"] = phase[np.argmin(c["N_grains"][inside])]
+        if wet:
+            dp = (c["p_mean"] - c["p_top"])[inside] / AMP
+            r["dp_min"], r["dp_max"] = dp.min(), dp.max()
+        rows.append(r)
+    return rows
+
+
+def fmt(r, key, f, scale=1.0):
+    return f % (scale * r[key]) if key in r else "none"
+
+
+def cycle_table(data):
+    lines = ["Per cycle of 2.5 s (phase 0 at the cycle's start, N = sigma0 and rising; its minimum "
+             "at phase 0.75). Slip: the top layer's velocity, from its displacement over %.3f s, "
+             "above %g m/s (onset; tau/N there) until it falls below it again (end; 1.000 when the "
+             "slip goes on into the next cycle); creep v: its mean velocity "
+             "over phases 0.2-0.6. Dilation: the plate's rise from the onset to its highest "
+             "during the slip. Z: coordination number; N_g: the grains' force on the plate per "
+             "area; dp: p_mean - p_top in the fluid cells below the plate, over A."
+             % (SMOOTH, SLIP_VELOCITY), "",
+             "| run | cycle | creep v (m/s) | onset (tau/N) | end | peak v (m/s) (phase) | mean v (m/s) "
+             "| slip (mm) | dilation (mm) | min Z (phase) | phase of min N_g | dp min, max (A) |",
+             "|" + "---|" * 12]
+    for label, rows in data.values():
+        for r in rows:
+            dp = "%.3f, %.3f" % (r["dp_min"], r["dp_max"]) if "dp_min" in r else "dry"
+            onset = "%.3f (%.2f)" % (r["onset"], r["ratio"]) if "onset" in r else "none"
+            lines.append("| %s | %d | %.2e | %s | %s | %s | %s | %s | %s | %.2f (%.3f) | %.3f | %s |" % (
+                label, r["cycle"], r["v_creep"], onset, fmt(r, "end", "%.3f"),
+                "%.3f (%.3f)" % (r["peak"], r["peak_phase"]) if "peak" in r else "none", fmt(r, "mean", "%.3f"), fmt(r, "slip", "%.1f", 1e3),
+                fmt(r, "dilation", "%.1f", 1e3), r["z_min"], r["z_min_phase"], r["n_min_phase"], dp))
+    return lines
+
+
+def spread_table(data, keep):
+    """mean (min to max) over the cycles kept"""
+    lines = ["| run | cycles | onset | tau/N at onset | slip (mm) | peak v (m/s) | dilation (mm) "
+             "| min Z | dp min (A) |", "|" + "---|" * 9]
+    for label, rows in data.values():
+        kept = [r for r in rows if r["cycle"] in keep]
+
+        def span(key, scale=1.0, f="%.3f"):
+            vals = [scale * r[key] for r in kept if key in r]
+            if not vals:
+                return "none"
+            return (f + " (" + f + " to " + f + ")") % (np.mean(vals), min(vals), max(vals))
+        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            label, ",".join(str(r["cycle"]) for r in kept), span("onset"), span("ratio", 1.0, "%.2f"),
+            span("slip", 1e3, "%.1f"),
+            span("peak"), span("dilation", 1e3, "%.1f"), span("z_min", 1.0, "%.2f"),
+            span("dp_min") if any("dp_min" in r for r in kept) else "dry"))
+    return lines
+
+
+COLOURS = {"wet": "C0", "mid": "C2", "twin": "C3", "dry": "C7"}
+
+
+def plot_cycles(series, path):
+    fig, ax = plt.subplots(5, 1, figsize=(8, 12), sharex=True)
+    for name, (label, c) in series.items():
+        t = c["time"]
+        v = smoothed_velocity(t, c["x_top"])
+        for k in range(CYCLES):
+            inside = (t >= k * PERIOD) & (t < (k + 1) * PERIOD)
+            ph = t[inside] / PERIOD - k
+            kw = dict(color=COLOURS[name], lw=0.8, alpha=0.4 + 0.15 * k,
+                      label=label if k == CYCLES - 1 else None)
+            ax[0].semilogy(ph, np.abs(v[inside]), **kw)
+            ax[1].plot(ph, c["N_grains"][inside] / 1e3, **kw)
+            if name != "dry":
+                ax[2].plot(ph, (c["p_mean"] - c["p_top"])[inside] / AMP, **kw)
+            ax[3].plot(ph, 1e3 * (c["z_wall"][inside] - c["z_wall"][inside][0]), **kw)
+            ax[4].plot(ph, c["coordination"][inside], **kw)
+    ph = np.linspace(0, 1, 200)
+    ax[1].plot(ph, (SIGMA0 + AMP * np.sin(2 * np.pi * ph)) / 1e3, "k--", lw=0.8, label="applied N")
+    ax[0].axhline(SLIP_VELOCITY, color="k", lw=0.5, ls=":")
+    ax[0].set_ylim(1e-7, 1)
+    labels = ["|v_x| top layer (m/s)", "N on the grains (kPa)", "(p_mean - p_top)/A",
+              "plate rise in the cycle (mm)", "coordination"]
+    for a, l in zip(ax, labels):
+        a.set_ylabel(l)
+    ax[0].legend(fontsize=7, loc="lower left")
+    ax[1].legend(fontsize=7, loc="upper right")
+    ax[-1].set_xlabel("phase of the forcing cycle (cycles 1-%d stacked, later ones darker)" % CYCLES)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+
+
+def plot_permeability(data, keep, path):
+    fig, ax = plt.subplots(1, 2, figsize=(9, 3.5))
+    for name, (label, rows) in data.items():
+        kc = VARIANTS[name][1]
+        x = kc if kc else 1e-11    # the dry bed, drawn at the right
+        for r in rows:
+            if r["cycle"] not in keep:
+                continue
+            ax[0].semilogx(x, 1e3 * r.get("slip", 0.0), "o", color=COLOURS[name])
+            if "onset" in r:
+                ax[1].semilogx(x, r["onset"], "o", color=COLOURS[name])
+    ax[0].set_ylabel("slip displacement per cycle (mm)")
+    ax[1].set_ylabel("slip onset (phase)")
+    for a in ax:
+        a.set_xlabel("k_c (m^2); at 1e-11: dry")
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+
+
+# ---------------------------------------------------------------- creep from the cycles
+
+def creep_points(c, window=0.05):
+    """(tau/N, gamma_dot, cycle) over phases 0.2-0.6 of each cycle: the slope of the top
+    layer's displacement over windows of `window` cycles, over the plate's height"""
+    t, x = c["time"], c["x_top"]
+    out = []
+    for k in range(CYCLES):
+        for start in np.arange(0.2, 0.6 - 1e-9, window):
+            w = (t >= (k + start) * PERIOD) & (t < (k + start + window) * PERIOD)
+            if w.sum() < 5:
+                continue
+            slope = np.polyfit(t[w], x[w], 1)[0]
+            n = np.mean(c["N_applied"][w])
+            out.append((TAU / n, slope / np.mean(c["z_wall"][w]), k + 1, n))
+    return np.array(out)
+
+
+def inertia_number(points):
+    """I = gamma_dot d sqrt(rho/N) of each window with a positive rate"""
+    p = points[points[:, 1] > 0]
+    return p[:, 1] * DIAMETER * np.sqrt(RHO / p[:, 3])
+
+
+def power_law(points):
+    """n, its 95 % half-interval, windows used and dropped (rate <= 0), r^2 of
+    log gamma_dot = n log(tau/N) + c"""
+    p = points[points[:, 1] > 0]
+    if len(p) < 4:
+        return None
+    fit = stats.linregress(np.log(p[:, 0]), np.log(p[:, 1]))
+    half = stats.t.ppf(0.975, len(p) - 2) * fit.stderr
+    return fit.slope, half, len(p), len(points) - len(p), fit.rvalue ** 2
+
+
+def creep_report(series, path):
+    lines = ["| run | cycle | n (95 %) | windows used (dropped: rate <= 0) | r^2 | inertia number I |",
+             "|---|---|---|---|---|---|"]
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for name, (label, c) in series.items():
+        pts = creep_points(c)
+        cycles = sorted(set(pts[:, 2].astype(int)))
+        sets = [(str(k), pts[pts[:, 2] == k]) for k in cycles]
+        sets += [("%d-%d pooled" % (cycles[1], cycles[-1]), pts[pts[:, 2] >= cycles[1]])] if len(cycles) > 2 else []
+        sets += [("all pooled", pts)]
+        for which, sel in sets:
+            fit = power_law(sel)
+            if fit:
+                i = inertia_number(sel)
+                lines.append("| %s | %s | %.1f ± %.1f | %d (%d) | %.2f | %.1e to %.1e |" % (
+                    (label, which) + fit + (i.min(), i.max())))
+            else:
+                lines.append("| %s | %s | too few positive rates | | | |" % (label, which))
+        good = pts[pts[:, 1] > 0]
+        ax.loglog(good[:, 0], good[:, 1], "o", ms=3, color=COLOURS[name], label=label)
+    ax.set_xlabel("tau/N (N: the applied normal stress)")
+    ax.set_ylabel("shear strain rate v_x/H (1/s)")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    return lines
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--part", default="all", choices=["cycle", "permeability", "creep", "all"])
+    ap.add_argument("--work", default="/tmp/pw_fidelity")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--analyse-only", action="store_true")
+    args = ap.parse_args()
+    if not args.analyse_only:
+        with ThreadPoolExecutor(args.jobs) as pool:
+            for name, cpu in pool.map(lambda n: run_variant(args.work, n), VARIANTS):
+                print("%s: %s" % (name, "done before" if cpu is None else "%.0f s CPU" % cpu),
+                      flush=True)
+    series, costs = {}, {}
+    for name, (label, _, _) in VARIANTS.items():
+        d = os.path.join(args.work, "cycle", name)
+        if complete(os.path.join(d, "timeseries.txt"), CYCLES * PERIOD):
+            series[name] = (label, load(os.path.join(d, "timeseries.txt")))
+            if os.path.exists(os.path.join(d, "cost.txt")):
+                costs[name] = [float(v) for v in open(os.path.join(d, "cost.txt")).read().split()]
+    if not series:
+        sys.exit("no complete run in " + args.work)
+    commit = subprocess.run(["git", "-C", HERE, "rev-parse", "--short", "HEAD"],
+                            capture_output=True, text=True).stdout.strip()
+    lines = ["# Measured by bench/fidelity.py", "",
+             "`/usr/bin/python3 bench/fidelity.py --part %s` at commit %s on the 2-core "
+             "development machine, shared with other jobs (CPU times below)." % (args.part, commit), ""]
+    if costs:
+        lines += ["| run | CPU s | wall s |", "|---|---|---|"]
+        lines += ["| %s | %.0f | %.0f |" % (VARIANTS[n][0], c[0], c[1]) for n, c in costs.items()]
+        lines.append("")
+    keep = list(range(2, CYCLES + 1))    # cycle 1 starts from the consolidated, unsheared bed
+    data = {n: (label, cycle_metrics(c, VARIANTS[n][1] is not None))
+            for n, (label, c) in series.items()}
+    if args.part in ("cycle", "all"):
+        plot_cycles(series, os.path.join(HERE, "fidelity_cycle.png"))
+        lines += ["## Figure 3: the tidal cycle", ""] + cycle_table(data) + [
+            "", "![stacked cycles](fidelity_cycle.png)", ""]
+    if args.part in ("permeability", "all"):
+        plot_permeability(data, keep, os.path.join(HERE, "fidelity_permeability.png"))
+        lines += ["## What the pore water changes", "",
+                  "Over cycles %s (cycle 1 starts from the consolidated, never sheared bed), "
+                  "mean (min to max):" % ",".join(map(str, keep)), ""]
+        lines += spread_table(data, keep) + [
+            "", "![slip against permeability](fidelity_permeability.png)", ""]
+    if args.part in ("creep", "all"):
+        lines += ["## Figure S1 from the tidal cycles", "",
+                  "Windows of 0.05 cycle over phases 0.2-0.6 of each cycle (N falling from 150 "
+                  "to 52 kPa; the paper: 1-3 s into each 5 s cycle); gamma_dot: the slope of the "
+                  "top layer's displacement over the window, over the plate's height; fitted "
+                  "log gamma_dot = n log(tau/N) + c over the windows with a positive rate.", ""]
+        lines += creep_report(series, os.path.join(HERE, "fidelity_creep_cycles.png"))
+        lines += ["", "![creep from the cycles](fidelity_creep_cycles.png)", ""]
+    open(os.path.join(HERE, "fidelity_results.md"), "w").write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
