@@ -16,9 +16,16 @@ Part "creep" (Figure S1, the paper's method): from the same tidal cycles, the sh
   against tau/N over phases 0.2-0.6 of each cycle while N falls; gamma_dot ~ (tau/N)^n
   fitted per cycle and pooled, with 95 % intervals.
 
+Part "yield": constant-stress shear of the consolidated (never sheared) bed: N held (the
+  plate at N, no tidal forcing, p_top 0), tau/N from 0.3 to 0.8 at N = 25 and 50 kPa, 0.3 s
+  each (140,187 steps), the plate's mass kept; whether the top layer holds (|v_x| < 1 cm/s
+  at the end) or fails, and the yield bracket between.
+
 Usage (after scripts/setup.sh; source scripts/env.sh):
-    /usr/bin/python3 bench/fidelity.py --part cycle|permeability|creep|all [--work DIR] [--jobs N]
+    /usr/bin/python3 bench/fidelity.py --part cycle|permeability|creep|yield|all [--work DIR]
+        [--jobs N]
         [--analyse-only]
+`--part all` is cycle, permeability and creep (from the same four runs); yield runs apart.
 Runs whose output is complete in --work are not repeated; the parameters were fixed before
 any run (examples/tidal_shear/in.params). Writes bench/fidelity_results.md (the tables;
 bench/RESULTS_fidelity.md discusses them) and the PNGs bench/fidelity_*.png.
@@ -208,6 +215,44 @@ def plot_permeability(data, keep, path):
     fig.savefig(path, dpi=90)
 
 
+# ---------------------------------------------------------------- yield at constant N
+
+YIELD_RATIOS = [0.3, 0.35, 0.4, 0.45, 0.5, 0.6, 0.7, 0.8]
+YIELD_N = [25.0e3, 50.0e3]
+YIELD_STEPS = 140187    # 0.3 s
+
+
+def run_yield(work, n, ratio):
+    d = os.path.join(work, "yield", "N%.0f_r%.2f" % (n / 1e3, ratio))
+    out = os.path.join(d, "timeseries.txt")
+    if not complete(out, 0.3):
+        prepare(d)
+        # the plate keeps the default's mass: mass_factor scales with 1/N
+        run_lmp(d, "in.tidal_shear", {"amp": 0, "sigma0": n, "tau": ratio * n,
+                                      "mass_factor": 0.493 * SIGMA0 / n, "run_steps": YIELD_STEPS})
+    return load(out)
+
+
+def yield_report(work):
+    lines = ["| N (kPa) | " + " | ".join("tau/N %.2f" % r for r in YIELD_RATIOS) + " | yield bracket |",
+             "|---|" + "---|" * (len(YIELD_RATIOS) + 1)]
+    for n in YIELD_N:
+        cells, held, failed = [], [], []
+        for ratio in YIELD_RATIOS:
+            c = run_yield(work, n, ratio)
+            t, x = c["time"], c["x_top"]
+            end = t > 0.25
+            v_end = np.polyfit(t[end], x[end], 1)[0]
+            fails = v_end > SLIP_VELOCITY
+            (failed if fails else held).append(ratio)
+            late = t > 0.2
+            cells.append("%s: %.2g m/s, %.3g mm" % ("fails" if fails else "holds", v_end,
+                                                    1e3 * (x[late][-1] - x[late][0])))
+        bracket = "%.2f-%.2f" % (max(held), min(failed)) if held and failed else "outside"
+        lines.append("| %.0f | %s | %s |" % (n / 1e3, " | ".join(cells), bracket))
+    return lines
+
+
 # ---------------------------------------------------------------- creep from the cycles
 
 def creep_points(c, window=0.05):
@@ -273,11 +318,21 @@ def creep_report(series, path):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--part", default="all", choices=["cycle", "permeability", "creep", "all"])
+    ap.add_argument("--part", default="all",
+                    choices=["cycle", "permeability", "creep", "yield", "all"])
     ap.add_argument("--work", default="/tmp/pw_fidelity")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--analyse-only", action="store_true")
     args = ap.parse_args()
+    if args.part == "yield":
+        lines = ["## Yield at constant N (the consolidated bed)", "",
+                 "At each (N, tau/N): the top layer's mean velocity over 0.25-0.3 s (the "
+                 "slope of its displacement; fails: above %g m/s) and its displacement over "
+                 "0.2-0.3 s." % SLIP_VELOCITY, ""]
+        lines += yield_report(args.work)
+        open(os.path.join(HERE, "fidelity_yield_results.md"), "w").write("\n".join(lines) + "\n")
+        print("\n".join(lines))
+        return
     if not args.analyse_only:
         with ThreadPoolExecutor(args.jobs) as pool:
             for name, cpu in pool.map(lambda n: run_variant(args.work, n), VARIANTS):
