@@ -1,6 +1,6 @@
 // Energy of the grain integrators at the recommended eps = Δt·√(kn/m) = 0.07 on a frictionless
 // dense gas, and a clearly unstable eps stopped by pair linear/coulomb's overlap_limit instead
-// of a silent NaN run (issue 6; the stability map is in bench/RESULTS_integrators.md).
+// of a silent NaN run (the stability map is in bench/RESULTS_integrators.md).
 #include "granular_inputs.h"
 #include "lammps_fixture.h"
 
