@@ -98,23 +98,12 @@ double FixWallStress::stress_now()
   return stress.evaluate(variables, update->ntimestep + 1);
 }
 
-namespace {
-// the CPU fix keeps per-atom virials (Fix::v_tally's per-atom part)
-struct PerAtomVirialZZ {
-  double **vatom;
-  void operator()(int i, double w) const
-  {
-    if (vatom) vatom[i][2] += w;
-  }
-};
-}    // namespace
-
 void FixWallStress::grain_contacts(double *sums)
 {
   porewater::sum_over_grains(
       atom->nlocal,
       wall->contacts(porewater::grains_of_atom(atom),
-                     PerAtomVirialZZ{evflag && vflag_atom ? vatom : nullptr}, groupbit),
+                     porewater::PerAtomVirialZZ{evflag && vflag_atom ? vatom : nullptr}, groupbit),
       sums);
 }
 

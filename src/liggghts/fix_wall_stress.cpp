@@ -113,22 +113,12 @@ double FixWallStress::stress_now()
   return stress_.evaluate(variables, update->ntimestep + 1);
 }
 
-namespace {
-struct PerAtomVirialZZ {
-  double **vatom;
-  void operator()(int i, double w) const
-  {
-    if (vatom) vatom[i][2] += w;
-  }
-};
-}    // namespace
-
 void FixWallStress::contact_sums(double *sums)
 {
   porewater::sum_over_grains(
       atom->nlocal,
       wall_->contacts(porewater::grains_of_atom(atom),
-                      PerAtomVirialZZ{evflag && vflag_atom ? vatom : nullptr}, groupbit),
+                      porewater::PerAtomVirialZZ{evflag && vflag_atom ? vatom : nullptr}, groupbit),
       sums);
   if (evflag && vflag_global) virial[2] += sums[2];
 }

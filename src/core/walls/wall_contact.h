@@ -55,6 +55,16 @@ PW_INLINE double plate_damping_force(const double v_wall, const double gamma_pla
 // wall, spring energy, zz virial, the dashpots' share of the force on the wall};
 // per_atom(i, w) receives each grain's virial (the CPU fix keeps per-atom virials, the
 // KOKKOS one only the global).
+// per_atom for a CPU host that keeps per-atom virials as double* rows (LAMMPS' and
+// LIGGGHTS' Fix::vatom): grain i's zz part; none when vatom is null
+struct PerAtomVirialZZ {
+  double **vatom;
+  void operator()(int i, double w) const
+  {
+    if (vatom) vatom[i][2] += w;
+  }
+};
+
 template <class G, class PerAtomVirial> struct WallContacts {
   static constexpr int count = 4;
   G g;
