@@ -11,16 +11,18 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLE = os.path.join(HERE, "..", "examples", "tidal_shear")
 
 
-def run_lmp(workdir, infile, variables, ranks=1, plugin_dir=None):
+def run_lmp(workdir, infile, variables, ranks=1, plugin_dir=None, log="log.lammps"):
     """lmp -in infile in workdir (niced, one OpenMP thread); returns its CPU seconds."""
-    env = dict(os.environ, OMP_NUM_THREADS="1", OMPI_ALLOW_RUN_AS_ROOT="1",
+    # OMP_PROC_BIND (scripts/env.sh: spread) pins a 1-thread run to core 0: concurrent runs
+    # would share that core
+    env = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false", OMPI_ALLOW_RUN_AS_ROOT="1",
                OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     if plugin_dir:
         env["LD_LIBRARY_PATH"] = plugin_dir + ":" + env.get("LD_LIBRARY_PATH", "")
     cmd = ["nice", "-n", "10"]
     if ranks > 1:
-        cmd += ["mpirun", "--oversubscribe", "-np", str(ranks), "-x", "LD_LIBRARY_PATH"]
-    cmd += ["lmp", "-in", infile, "-log", "log.lammps", "-screen", "none"]
+        cmd += ["mpirun", "--oversubscribe", "-np", str(ranks), "-x", "LD_LIBRARY_PATH", "-x", "OMP_PROC_BIND"]
+    cmd += ["lmp", "-in", infile, "-log", log, "-screen", "none"]
     for k, v in variables.items():
         cmd += ["-var", k, str(v)]
     proc = subprocess.Popen(cmd, cwd=workdir, env=env)

@@ -1,0 +1,200 @@
+"""The example at Table S1 size (bench/fidelity.py --part full): 9,600 grains, -var full 1,
+on 2 MPI ranks, for as long as one benchmark command of at most an hour allows.
+
+The bed: in.pack and in.consolidate at Table S1 size, both with the reduced case's k_n
+(1.16e7: 10x the time step; preparation only, damped frictionless contacts), then
+in.consolidate again at Table S1's k_n from that bed (the contacts stiffen: the bed rises
+by their overlap, ~1e-4 of a grain). Then in.tidal_shear -var full 1 from phase 0 until
+the wall-clock budget of the run is spent (LAMMPS' timer timeout); the preparation's time
+is reported apart.
+"""
+import os
+import re
+import shutil
+import subprocess
+import time
+
+import numpy as np
+
+from example_runs import EXAMPLE, HERE, load, prepare, run_lmp
+
+SOFT_KN = 1.16e7
+SETTLE_TIME = 0.6                   # s: in.pack at most (its halt on the kinetic energy waits
+                                    # for the slow compaction of frictionless grains: > 2 s)
+PERIOD = 5.0                        # s: Table S1's forcing period
+PROJECTED_US_PER_STEP = 430.0       # bench/RESULTS.md: the Table S1-sized scene on 2 ranks
+DT = 0.07 / np.sqrt(1.16e9 / (2600.0 * 4.0 / 3.0 * np.pi * 0.01 ** 3))
+
+
+def prepare_full(work):
+    d = os.path.join(work, "full")
+    os.makedirs(d, exist_ok=True)
+    for name in ["in.params", "in.tidal_shear", "in.pack", "in.consolidate"]:
+        shutil.copy(os.path.join(EXAMPLE, name), d)
+    shutil.copy(os.path.join(HERE, "in.tidal_shear_timed"), d)
+    steps = []
+    if not os.path.exists(os.path.join(d, "packed_1.data")):
+        steps.append(("in.pack", {"full": 1, "kn": SOFT_KN, "settle_time": SETTLE_TIME}, 2,
+                      "log.pack"))
+    if not os.path.exists(os.path.join(d, "consolidated_soft.data")):
+        steps.append(("in.consolidate", {"full": 1, "kn": SOFT_KN,
+                                         "output": "consolidated_soft.data"}, 2, "log.consolidate_soft"))
+    if not os.path.exists(os.path.join(d, "consolidated_1.data")):
+        # at Table S1's k_n the plate and the grains settle in milliseconds (checked in the log)
+        steps.append(("in.consolidate", {"full": 1, "input": "consolidated_soft.data",
+                                         "settle_time": 0.05}, 2, "log.consolidate"))
+    for infile, variables, ranks, log in steps:
+        run_lmp(d, infile, variables, ranks=ranks, log=log)
+    return d
+
+
+def run_full(work, budget_s):
+    """the preparation (once), then the run for budget_s wall seconds; returns its folder"""
+    d = prepare_full(work)
+    if os.path.exists(os.path.join(d, "cost.txt")):
+        return d
+    left = int(budget_s - 60)    # the run's setup and output
+    timeout = "%02d:%02d:%02d" % (left // 3600, left // 60 % 60, left % 60)
+    run_start = time.time()
+    cpu = run_lmp(d, "in.tidal_shear_timed", {"full": 1, "timeout": timeout,
+                                               "write_state": "state_end"}, ranks=2)
+    with open(os.path.join(d, "cost.txt"), "w") as f:
+        f.write("%.1f %.1f\n" % (cpu, time.time() - run_start))
+    reference_runs(work)
+    return d
+
+
+LAUNCH_US, COPY_US = 5.0, 15.0       # GPU latency assumed per dispatch (with fence), per copy
+HOST_FIX_COPIES = 7                 # fix wall/gran on the host: x v f omega torque up, f torque down
+REFERENCE_STEPS = 20000
+REDUCED_PROJECTION_US = 145.0       # examples/tidal_shear/README.md: the shipped case, 1 rank, quiet
+
+
+def reference_runs(work):
+    """the reduced example right after, on the same machine: (µs per step on 1 and 2 ranks)"""
+    d = os.path.join(work, "full_reference")
+    prepare(d)
+    out = []
+    for ranks in (1, 2):
+        log = "log.%drank" % ranks
+        if not os.path.exists(os.path.join(d, log)):
+            run_lmp(d, "in.tidal_shear", {"run_steps": REFERENCE_STEPS}, ranks=ranks, log=log)
+        seconds, steps = loop_time(os.path.join(d, log))
+        out.append(1e6 * seconds / steps)
+    return out
+
+
+def dispatches_per_step(work):
+    """Kokkos dispatches and deep copies per step of the reduced example with -sf kk (the
+    same per step at any size): the difference of a 200- and a 100-step run"""
+    d = os.path.join(work, "dispatches")
+    prepare(d)
+    hook = os.path.join(d, "kokkos_dispatches.so")
+    subprocess.run(["g++", "-O2", "-shared", "-fPIC", "-o", hook,
+                    os.path.join(HERE, "kokkos_dispatches.cpp")], check=True)
+    totals = []
+    for steps in (100, 200):
+        out = os.path.join(d, "count_%d.txt" % steps)
+        env = dict(os.environ, KOKKOS_PROFILE_LIBRARY=hook, KCOUNT_OUT=out, OMP_NUM_THREADS="1",
+                   OMP_PROC_BIND="false")
+        subprocess.run(["lmp", "-k", "on", "t", "1", "-sf", "kk", "-in", "in.tidal_shear",
+                        "-var", "run_steps", str(steps), "-screen", "none", "-log", "none"],
+                       cwd=d, env=env, check=True)
+        words = open(out).readline().split()
+        totals.append({words[i]: int(words[i + 1]) for i in range(0, len(words), 2)})
+    per = {k: (totals[1][k] - totals[0][k]) / 100.0 for k in totals[0]}
+    return per["for"] + per["reduce"] + per["scan"], per["deep_copy"]
+
+
+def preparation_time(d):
+    """wall seconds of the preparation's runs (their logs' loop times)"""
+    return sum(loop_time(os.path.join(d, log), last=False)[0]
+               for log in ["log.pack", "log.consolidate_soft", "log.consolidate"])
+
+
+def loop_time(log, last=True):
+    """(seconds, steps) of the last run in a LAMMPS log, or of all its runs"""
+    found = re.findall(r"Loop time of ([0-9.eE+]+) on \d+ procs for (\d+) steps", open(log).read())
+    if last:
+        return float(found[-1][0]), int(found[-1][1])
+    return sum(float(f[0]) for f in found), sum(int(f[1]) for f in found)
+
+
+def end_of_preparation(d):
+    """the last thermo line of the final consolidation: (plate velocity, N on the grains)"""
+    rows = [line.split() for line in open(os.path.join(d, "log.consolidate"))]
+    rows = [r for r in rows if len(r) == 7 and r[0].isdigit()]
+    return float(rows[-1][3]), float(rows[-1][4])
+
+
+def compare(d, reduced, reduced_period):
+    """the Table S1-sized run against the reduced default's first cycle at the same phases"""
+    full = load(os.path.join(d, "timeseries.txt"))
+    seconds, steps = loop_time(os.path.join(d, "log.lammps"))
+    us = 1e6 * seconds / steps
+    reached = full["time"][-1] / PERIOD
+    lines = ["Run: %d steps (%.3f s of model time, phase %.3f of the first cycle) in %.0f s on 2 "
+             "ranks: **%.0f µs per step** against the %.0f µs projected (bench/RESULTS.md, the "
+             "9,600-grain scene on 2 ranks), %.2fx. The bed's preparation took %.0f s more "
+             "(in.pack, in.consolidate twice: their loop times)."
+             % (steps, full["time"][-1], reached, seconds, us, PROJECTED_US_PER_STEP,
+                us / PROJECTED_US_PER_STEP, preparation_time(d)),
+             "At the end of the preparation the plate moved at %.2g m/s with %.1f kPa on the "
+             "grains (sigma0 80 kPa)." % (end_of_preparation(d)[0], end_of_preparation(d)[1] / 1e3), ""]
+    one, two = reference_runs(os.path.dirname(d))
+    lines += ["The reduced example run right after on the same machine (%d steps of the shipped "
+              "bed): %.0f µs per step on 1 rank (%.0f measured on a quiet machine before: %.2fx "
+              "that now), %.0f on 2 ranks. Table S1 size "
+              "per step against the reduced case on 2 ranks: %.1fx (%.1fx the grains)."
+              % (REFERENCE_STEPS, one, REDUCED_PROJECTION_US, one / REDUCED_PROJECTION_US, two,
+                 us / two, 9600 / 1200), ""]
+    nine = 9 * PERIOD / DT
+    kernels, copies = dispatches_per_step(os.path.dirname(d))
+    floor = kernels * LAUNCH_US + (copies + HOST_FIX_COPIES) * COPY_US
+    lines += ["A full 9-cycle run (45 s, %.2e steps of %.3g s) at this cost: %.1f days on these "
+              "2 cores." % (nine, DT, nine * us * 1e-6 / 86400), "",
+              "On a GPU (projected, not measured: no device was lent): the /kk run dispatches "
+              "%.1f kernels and %.1f deep copies per step (counted on the host backend with "
+              "bench/kokkos_dispatches.cpp, the same per step at any size), and fix wall/gran "
+              "(no /kk in 29Sep2021) moves ~%d arrays between host and device each step. At "
+              "%.0f µs per dispatch with its fence and %.0f µs per copy (assumed, typical of "
+              "CUDA; 9,600 grains are too few to fill the device, so latency bounds the step): "
+              "%.0f µs per step, %.1f hours for the 9 cycles (the original: ~70 days)."
+              % (kernels, copies, HOST_FIX_COPIES, LAUNCH_US, COPY_US, floor,
+                 nine * floor * 1e-6 / 3600), ""]
+    lines += ["| phase window | quantity | Table S1 size | reduced (cycle 1) |", "|---|---|---|---|"]
+    width = max(0.01, round(reached / 4, 2))    # phase: four windows over the run
+    windows = [(a, min(a + width, reached)) for a in np.arange(0.0, reached - width / 2, width)]
+    for a, b in windows:
+        for name, (f_full, f_red) in {
+                "creep velocity (m/s)": (velocity, velocity),
+                "coordination (mean)": (mean_of("coordination"), mean_of("coordination")),
+                "p_mean - p_top, min / A": (dp_of(np.min), dp_of(np.min)),
+                "p_mean - p_top, max / A": (dp_of(np.max), dp_of(np.max)),
+                "N on the grains / applied (mean)": (n_ratio, n_ratio)}.items():
+            lines.append("| %.2f-%.2f | %s | %.3g | %.3g |" % (
+                a, b, name, f_full(full, a * PERIOD, b * PERIOD),
+                f_red(reduced, a * reduced_period, b * reduced_period)))
+    return lines, full
+
+
+def _window(c, t0, t1):
+    return (c["time"] >= t0) & (c["time"] <= t1) & (c["time"] > 0)
+
+
+def velocity(c, t0, t1):
+    w = _window(c, t0, t1)
+    return np.polyfit(c["time"][w], c["x_top"][w], 1)[0]
+
+
+def mean_of(key):
+    return lambda c, t0, t1: np.mean(c[key][_window(c, t0, t1)])
+
+
+def dp_of(f):
+    return lambda c, t0, t1: f((c["p_mean"] - c["p_top"])[_window(c, t0, t1)]) / 70.0e3
+
+
+def n_ratio(c, t0, t1):
+    w = _window(c, t0, t1)
+    return np.mean(c["N_grains"][w] / c["N_applied"][w])
