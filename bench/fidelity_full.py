@@ -168,6 +168,7 @@ def compare(d, reduced, reduced_period):
     for a, b in windows:
         for name, (f_full, f_red) in {
                 "creep velocity (m/s)": (velocity, velocity),
+                "top layer displacement at the end (µm)": (displacement, displacement),
                 "coordination (mean)": (mean_of("coordination"), mean_of("coordination")),
                 "p_mean - p_top, min / A": (dp_of(np.min), dp_of(np.min)),
                 "p_mean - p_top, max / A": (dp_of(np.max), dp_of(np.max)),
@@ -185,6 +186,10 @@ def _window(c, t0, t1):
 def velocity(c, t0, t1):
     w = _window(c, t0, t1)
     return np.polyfit(c["time"][w], c["x_top"][w], 1)[0]
+
+
+def displacement(c, t0, t1):
+    return 1e6 * c["x_top"][_window(c, t0, t1)][-1]
 
 
 def mean_of(key):

@@ -113,8 +113,10 @@ def series(work, jobs_map, states=tuple(STATES), run=True):
         held = [p for p in checks if end_velocity(checks[p]) <= SLIP_VELOCITY]
         holds = tests(held, HOLD_TIME, fluid)
         for p in checks:
+            late = checks[p]["time"] > CHECK_TIME - 0.05
             r = {"fails": p not in held, "v_end": end_velocity(checks[p]),
-                 "unmeasured": p in held and p not in holds}
+                 "unmeasured": p in held and p not in holds,
+                 "resist": np.mean(checks[p]["tau_resist"][late]) / p[1]}
             if p in holds:
                 r.update(measure(holds[p]))
             out[p if fluid else p + ("dry",)] = r
@@ -150,8 +152,9 @@ def report(results):
                     lines.append("| %s | %.0f | %.2f | holds at %.1f s; not run longer | | | | |"
                                  % (label, n / 1e3, ratio, CHECK_TIME))
                 elif r["fails"]:
-                    lines.append("| %s | %.0f | %.2f | fails (%.2g m/s at %.1f s) | | | | |"
-                                 % (label, n / 1e3, ratio, r["v_end"], CHECK_TIME))
+                    lines.append("| %s | %.0f | %.2f | fails (%.2g m/s at %.1f s; the bed "
+                                 "resists with %.2f N) | | | | |"
+                                 % (label, n / 1e3, ratio, r["v_end"], CHECK_TIME, r["resist"]))
                 else:
                     lines.append("| %s | %.0f | %.2f | %.2e ± %.1e | %.2e | %.3f | %.2g | %.0e |" % (
                         label, n / 1e3, ratio, r["rate"], r["half"], r["rate_early"],
