@@ -1,9 +1,10 @@
 """Runs of examples/tidal_shear for the benchmarks (bench/wall_damping.py, bench/fidelity.py):
 a work folder with the example's inputs, lmp with -var overrides, the time series."""
 import os
-import resource
+import re
 import shutil
 import subprocess
+import time
 
 import numpy as np
 
@@ -30,6 +31,34 @@ def run_lmp(workdir, infile, variables, ranks=1, plugin_dir=None, log="log.lammp
     if status != 0:
         raise subprocess.CalledProcessError(status, cmd)
     return usage.ru_utime + usage.ru_stime
+
+
+def time_step(kn, eps=0.07, radius=0.01, rho=2600.0):
+    """examples/tidal_shear/in.params: dt = eps / sqrt(k_n / m)"""
+    return eps / np.sqrt(kn / (rho * 4.0 / 3.0 * np.pi * radius ** 3))
+
+
+def timed_run(workdir, infile, variables, ranks=1):
+    """run_lmp, its CPU and wall seconds written to workdir/cost.txt"""
+    start = time.time()
+    cpu = run_lmp(workdir, infile, variables, ranks=ranks)
+    with open(os.path.join(workdir, "cost.txt"), "w") as f:
+        f.write("%.1f %.1f\n" % (cpu, time.time() - start))
+    return cpu
+
+
+def read_cost(workdir):
+    """[CPU s, wall s] of timed_run, or None"""
+    path = os.path.join(workdir, "cost.txt")
+    return [float(v) for v in open(path).read().split()] if os.path.exists(path) else None
+
+
+def loop_time(log, last=True):
+    """(seconds, steps) of the last run in a LAMMPS log, or of all its runs"""
+    found = re.findall(r"Loop time of ([0-9.eE+]+) on \d+ procs for (\d+) steps", open(log).read())
+    if last:
+        return float(found[-1][0]), int(found[-1][1])
+    return sum(float(f[0]) for f in found), sum(int(f[1]) for f in found)
 
 
 def prepare(workdir, extra=()):

@@ -34,18 +34,16 @@ import argparse
 import os
 import subprocess
 import sys
-import time
 from concurrent.futures import ThreadPoolExecutor
 
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-from scipy import stats
 
 import fidelity_full
 import fidelity_stress
-from example_runs import complete, load, prepare, run_lmp
+from example_runs import complete, load, prepare, read_cost, timed_run
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CYCLES = 4
@@ -67,11 +65,7 @@ def run_variant(work, name):
     if complete(out, CYCLES * PERIOD):
         return name, None
     prepare(d)
-    start = time.time()
-    cpu = run_lmp(d, "in.tidal_shear", dict(VARIANTS[name][2], cycles=CYCLES))
-    with open(os.path.join(d, "cost.txt"), "w") as f:
-        f.write("%.1f %.1f\n" % (cpu, time.time() - start))
-    return name, cpu
+    return name, timed_run(d, "in.tidal_shear", dict(VARIANTS[name][2], cycles=CYCLES))
 
 
 def smoothed_velocity(t, x):
@@ -247,9 +241,8 @@ def power_law(points):
     p = points[points[:, 1] > 0]
     if len(p) < 4:
         return None
-    fit = stats.linregress(np.log(p[:, 0]), np.log(p[:, 1]))
-    half = stats.t.ppf(0.975, len(p) - 2) * fit.stderr
-    return fit.slope, half, len(p), len(points) - len(p), fit.rvalue ** 2
+    slope, half, r2 = fidelity_stress.log_log_fit(p[:, 0], p[:, 1])
+    return slope, half, len(p), len(points) - len(p), r2
 
 
 def save_rate_plot(fig, ax, path):
@@ -298,10 +291,7 @@ def run_slow(work):
     out = os.path.join(d, "timeseries.txt")
     if not complete(out, SLOW["cycles"] / SLOW["freq"]):
         prepare(d)
-        start = time.time()
-        cpu = run_lmp(d, "in.tidal_shear", SLOW)
-        with open(os.path.join(d, "cost.txt"), "w") as f:
-            f.write("%.1f %.1f\n" % (cpu, time.time() - start))
+        timed_run(d, "in.tidal_shear", SLOW)
     return load(out)
 
 
@@ -346,8 +336,8 @@ def load_cycles(work):
         d = os.path.join(work, "cycle", name)
         if complete(os.path.join(d, "timeseries.txt"), CYCLES * PERIOD):
             series[name] = (label, load(os.path.join(d, "timeseries.txt")))
-            if os.path.exists(os.path.join(d, "cost.txt")):
-                costs[name] = [float(v) for v in open(os.path.join(d, "cost.txt")).read().split()]
+            if read_cost(d):
+                costs[name] = read_cost(d)
     if not series:
         sys.exit("no complete run in " + work)
     return series, costs
@@ -390,8 +380,7 @@ def main():
         series, _ = load_cycles(args.work)
         d = os.path.join(args.work, "full")
         lines, full = fidelity_full.compare(d, series["wet"][1], PERIOD)
-        cpu = [float(v) for v in open(os.path.join(d, "cost.txt")).read().split()]
-        write("full", header("full", {"Table S1 size, 2 ranks (the run)": cpu}) + [
+        write("full", header("full", {"Table S1 size, 2 ranks (the run)": read_cost(d)}) + [
             "## Table S1 size", ""] + lines)
         return
     if not args.analyse_only:
@@ -418,8 +407,7 @@ def main():
         slow = run_slow(args.work) if not args.analyse_only else load(
             os.path.join(args.work, "slow", "timeseries.txt"))
         stress = fidelity_stress.series(args.work, jobs_map, run=not args.analyse_only)
-        slow_cost = os.path.join(args.work, "slow", "cost.txt")
-        costs["2x slower forcing"] = [float(v) for v in open(slow_cost).read().split()]
+        costs["2x slower forcing"] = read_cost(os.path.join(args.work, "slow"))
         lines = header("creep", costs) + [
             "## Figure S1 from the tidal cycles", "",
             "Windows of 0.05 cycle over phases 0.2-0.6 of each cycle (N falling from 150 "

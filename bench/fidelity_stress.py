@@ -15,11 +15,11 @@ import shutil
 import numpy as np
 from scipy import stats
 
-from example_runs import complete, load, prepare, run_lmp
+from example_runs import complete, load, prepare, run_lmp, time_step
 
 SIGMA0 = 80.0e3
 DIAMETER, RHO = 0.02, 2600.0
-DT = 0.07 / np.sqrt(1.16e7 / (RHO * 4.0 / 3.0 * np.pi * (DIAMETER / 2) ** 3))   # in.params
+DT = time_step(1.16e7)                 # the reduced case's k_n (in.params)
 SLIP_VELOCITY = 1e-2                   # m/s: failed (as the tidal cycles' slip)
 RATIOS = [0.1, 0.2, 0.3, 0.4, 0.45, 0.5, 0.6, 0.7]
 NORMAL = [25.0e3, 50.0e3]
@@ -123,15 +123,20 @@ def series(work, jobs_map, states=tuple(STATES), run=True):
     return out
 
 
+def log_log_fit(x, y):
+    """log y = n log x + c: n, its 95 % half-interval, r^2"""
+    fit = stats.linregress(np.log(x), np.log(y))
+    return fit.slope, stats.t.ppf(0.975, len(x) - 2) * fit.stderr, fit.rvalue ** 2
+
+
 def power_law(rows):
     """n (95 %) of gamma_dot ~ (tau/N)^n over the held tests whose rate is resolved
     (positive and above its own 95 % interval)"""
     pts = [(ratio, r["rate"]) for ratio, r in rows if "rate" in r and r["rate"] > r["half"]]
     if len(pts) < 3:
         return None
-    x, y = np.log([p[0] for p in pts]), np.log([p[1] for p in pts])
-    fit = stats.linregress(x, y)
-    return fit.slope, stats.t.ppf(0.975, len(pts) - 2) * fit.stderr, len(pts), fit.rvalue ** 2
+    slope, half, r2 = log_log_fit([p[0] for p in pts], [p[1] for p in pts])
+    return slope, half, len(pts), r2
 
 
 def report(results):

@@ -35,10 +35,10 @@ import matplotlib.pyplot as plt
 import numpy as np
 from scipy.signal import hilbert
 
-from example_runs import complete, load, prepare, run_lmp
+from example_runs import complete, load, prepare, run_lmp, time_step
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-A, SIGMA0, T_CYCLE, DT = 70e3, 80e3, 2.5, 0.07 / np.sqrt(1.16e7 / (2600 * 4 / 3 * np.pi * 1e-6))
+A, SIGMA0, T_CYCLE, DT = 70e3, 80e3, 2.5, time_step(1.16e7)
 CYCLE_STEPS = int(round(3.0 / DT))
 
 RINGDOWN = {  # name: (label, variables)
