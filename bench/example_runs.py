@@ -54,7 +54,8 @@ def read_cost(workdir):
 
 
 def loop_time(log, last=True):
-    """(seconds, steps) of the last run in a LAMMPS log, or of all its runs"""
+    """(seconds, steps) of the last run in a LAMMPS log, or of all its runs (in.tidal_shear
+    runs in chunks, one run each: all of them)"""
     found = re.findall(r"Loop time of ([0-9.eE+]+) on \d+ procs for (\d+) steps", open(log).read())
     if last:
         return float(found[-1][0]), int(found[-1][1])
@@ -63,8 +64,9 @@ def loop_time(log, last=True):
 
 def prepare(workdir, extra=()):
     os.makedirs(workdir, exist_ok=True)
-    for name in ["in.params", "in.tidal_shear", "consolidated_0.data"]:
-        shutil.copy(os.path.join(EXAMPLE, name), workdir)
+    for name in os.listdir(EXAMPLE):
+        if name.startswith("in.") or name == "consolidated_0.data":
+            shutil.copy(os.path.join(EXAMPLE, name), workdir)
     for name in extra:
         shutil.copy(os.path.join(HERE, name), workdir)
 

@@ -27,7 +27,8 @@ DT = time_step(1.16e9)              # Table S1's k_n
 def prepare_full(work):
     d = os.path.join(work, "full")
     os.makedirs(d, exist_ok=True)
-    for name in ["in.params", "in.tidal_shear", "in.pack", "in.consolidate"]:
+    for name in ["in.params", "in.tidal_shear", "in.checkpoint_params", "in.continue", "in.pack",
+                 "in.consolidate"]:
         shutil.copy(os.path.join(EXAMPLE, name), d)
     shutil.copy(os.path.join(HERE, "in.tidal_shear_timed"), d)
     steps = []
@@ -74,7 +75,7 @@ def reference_runs(work):
         log = "log.%drank" % ranks
         if not os.path.exists(os.path.join(d, log)):
             run_lmp(d, "in.tidal_shear", {"run_steps": REFERENCE_STEPS}, ranks=ranks, log=log)
-        seconds, steps = loop_time(os.path.join(d, log))
+        seconds, steps = loop_time(os.path.join(d, log), last=False)
         out.append(1e6 * seconds / steps)
     return out
 
@@ -125,7 +126,7 @@ def end_of_preparation(d):
 def compare(d, reduced, reduced_period):
     """the Table S1-sized run against the reduced default's first cycle at the same phases"""
     full = load(os.path.join(d, "timeseries.txt"))
-    seconds, steps = loop_time(os.path.join(d, "log.lammps"))
+    seconds, steps = loop_time(os.path.join(d, "log.lammps"), last=False)
     us = 1e6 * seconds / steps
     reached = full["time"][-1] / PERIOD
     plate_v, plate_n = end_of_preparation(d)

@@ -110,11 +110,11 @@ def finish(d, p):
     if p.wait() != 0:
         sys.exit(f"run in {d} failed:\n" + open(os.path.join(d, "shell.out")).read()[-2000:])
     log = open(os.path.join(d, "log.lammps")).read()
-    m = re.search(r"Loop time of (\S+) on (\d+) procs for (\d+) steps", log)
+    loops = re.findall(r"Loop time of (\S+) on (\d+) procs for (\d+) steps", log)    # per chunk
     names = open(os.path.join(d, "timeseries.txt")).readline().lstrip("# ").split()
     data = np.loadtxt(os.path.join(d, "timeseries.txt"), ndmin=2)
     return dict(series={n: data[:, k] for k, n in enumerate(names)},
-                seconds=float(m.group(1)), steps=int(m.group(3)))
+                seconds=sum(float(m[0]) for m in loops), steps=sum(int(m[2]) for m in loops))
 
 
 def load():

@@ -32,6 +32,8 @@ class FixDarcyPressure : public Fix, protected porewater::FluidHost {
   void restart(char *) override;
   void *extract(const char *, int &) override;
   double memory_usage() override;
+  // the fluid's grid and fields, for compute darcy/grain
+  const porewater::DarcyFluid &darcy_fluid() const { return *fluid; }
 #if PW_LAMMPS_HAS_GRID3D
   // the fields as per-grid data (dump grid, fix ave/grid): fix_darcy_pressure_grid.cpp
   int get_grid_by_name(const std::string &, int &) override;

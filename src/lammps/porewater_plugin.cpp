@@ -9,7 +9,10 @@
 #include "fix.h"
 #include "pair.h"
 
+#include "compute.h"
+#include "compute_darcy_grain.h"
 #include "fix_darcy_pressure.h"
+#include "fix_progress.h"
 #include "fix_nve_sphere_ty3.h"
 #include "fix_shear_stress.h"
 #include "fix_wall_stress.h"
@@ -45,6 +48,11 @@ template <class T> Pair *pair_creator(LAMMPS *lmp)
 }
 
 template <class T> Fix *fix_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new T(lmp, narg, arg);
+}
+
+template <class T> Compute *compute_creator(LAMMPS *lmp, int narg, char **arg)
 {
   return new T(lmp, narg, arg);
 }
@@ -89,6 +97,16 @@ struct Registrar {
 #endif
   }
 
+  // styles with no per-grain work of their own: the same class serves KOKKOS runs
+  template <class Cpu> void add_host_fix(const char *name, const char *info)
+  {
+    add("fix", name, info, (void *) &fix_creator<Cpu>, true);
+  }
+  template <class Cpu> void add_host_compute(const char *name, const char *info)
+  {
+    add("compute", name, info, (void *) &compute_creator<Cpu>, true);
+  }
+
  private:
   void add_kokkos(const char *style, const char *name, void *device, void *host, bool v2)
   {
@@ -130,4 +148,8 @@ extern "C" void porewater_register_styles(void *lmp, void *handle, void *regfunc
       "nve/sphere/ty3", "third-order Taylor integrator of finite-size spheres");
   r.add_fix<FixDarcyPressure, FixDarcyPressureKokkos>(
       "darcy/pressure", "pore-water pressure on a Darcy grid, force on grains");
+  r.add_host_compute<ComputeDarcyGrain>(
+      "darcy/grain", "pore pressure and porosity of fix darcy/pressure at each grain");
+  r.add_host_fix<FixProgress>(
+      "progress", "progress of a long run, finish time, wall-time limit");
 }

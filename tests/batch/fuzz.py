@@ -91,7 +91,7 @@ STYLES = {
         SCENE + PAIR + NVE +
         "@fix fl mobile darcy/pressure grid 2 2 5 viscosity 1 compressibility 1 density 1 "
         "permeability 1 bottom 0.5 ztop 4.5 initial 0.1 atol 1e-12 zhi 5 top noflow "
-        "interpolate step profile 20 profile.txt vtk 30 grid\n"
+        "interpolate step profile 20 profile.txt append yes vtk 30 grid\n"
         "thermo_style custom step ke f_fl[1] f_fl[2] f_fl[3] f_fl[4] f_fl[6]\n" + RUN),
     "wall_stress": (
         SCENE + PAIR + NVE +
@@ -106,11 +106,23 @@ STYLES = {
         "fix wall all wall/stress z auto stress 5 mass 1 kn 1.0e4 damping 1\n"
         "@fix plate top shear/stress tau 1 mass 1\n"
         "thermo_style custom step ke f_plate[1] f_plate[2] f_plate[3]\n" + RUN),
+    "darcy_grain": (
+        SCENE + PAIR + NVE +
+        "fix fl all darcy/pressure grid 4 4 6 viscosity 1 compressibility 1 density 1 "
+        "permeability 1 top v_ptop gravity 0 0 -1\n"
+        "@compute dg all darcy/grain fl\n"
+        "compute dgs all reduce sum c_dg[1] c_dg[2]\n"
+        "thermo_style custom step ke c_dgs[1] c_dgs[2]\n" + RUN),
+    "progress": (
+        SCENE + PAIR + NVE +
+        "@fix prog all progress end 60 period 2.5 walltime 01:00:00 safety 1.5\n"
+        "thermo_style custom step ke f_prog[2] f_prog[3]\nthermo 10\n"
+        "run 60 every 20 NULL\nprint \"stopped $(f_prog[1])\"\n"),
     "nve_sphere_ty3": (
         SCENE + PAIR + "@fix integrate mobile nve/sphere/ty3 corrector yes\n"
         "thermo_style custom step ke pe\n" + RUN),
 }
-HEAD = {"pair_style": 2, "pair_coeff": 1, "fix": 4}
+HEAD = {"pair_style": 2, "pair_coeff": 1, "fix": 4, "compute": 4}
 
 KOKKOS = ["-k", "on", "t", "1", "-sf", "kk", "-pk", "kokkos", "neigh", "half", "newton", "off"]
 
@@ -210,7 +222,7 @@ def thermo_values(log):
         if line.startswith("Loop time"):
             inside, finished = False, True
             continue
-        if inside and words:
+        if inside and words and words[0] != "progress:":    # fix progress's line ends a run
             values.extend(words)
     return values if finished else None
 

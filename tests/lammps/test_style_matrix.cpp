@@ -126,6 +126,29 @@ StyleCase fix_darcy_pressure()
   return c;
 }
 
+// `solver relaxed`, the original program's iteration, in the same scenes: /kk, MPI and the
+// restart split as the converged solver (the sweeps are one more deterministic function of
+// the same deposits), and its own bad input
+StyleCase fix_darcy_pressure_relaxed()
+{
+  StyleCase c = fix_darcy_pressure();
+  c.name = "FixDarcyPressureRelaxed";
+  const std::string relaxed = " solver relaxed 0.05 1e-3";
+  const std::string fluid = bed_fluid(lifting_pressure, 2) + relaxed + "\nfix move mobile nve/sphere\n";
+  c.kokkos.commands = fluid;
+  c.mpi.commands = fluid;
+  const std::string every3 = bed_fluid(lifting_pressure, 3) + relaxed;
+  c.restart.scene.commands = every3 + "\nfix move mobile nve/sphere\n";
+  c.restart.commands = every3 + " initial 123\nfix move mobile nve/sphere\n";
+  const std::string fix = "fix bad all darcy/pressure grid 2 2 4", unit = unit_diffusivity;
+  c.bad_inputs = {
+      {fix + unit + " solver exact", "solver expects converged or relaxed, got 'exact'"},
+      {fix + unit + " solver relaxed 0 1e-3", "solver expects a number in (0, 1], got '0'"},
+      {fix + unit + " solver relaxed 0.05", "solver expects a number > 0, but the command ends there"},
+  };
+  return c;
+}
+
 // `options`: the wall's dashpot keywords, on the /kk and MPI scenes
 StyleCase fix_wall_stress(const std::string &name, const std::string &kokkos_options,
                           const std::string &mpi_options)
@@ -268,7 +291,8 @@ std::vector<StyleCase> cases()
       {fix + "plate_damping -2", "plate_damping expects a finite number >= 0, got '-2'"},
       {fix + "plate_damping soft", "plate_damping expects a finite number >= 0, got 'soft'"},
   };
-  return {pair_linear_coulomb(), fix_darcy_pressure(), fix_wall_stress("FixWallStress", "", ""),
+  return {pair_linear_coulomb(), fix_darcy_pressure(), fix_darcy_pressure_relaxed(),
+          fix_wall_stress("FixWallStress", "", ""),
           dashpots, fix_shear_stress(), ty3, corrected};
 }
 

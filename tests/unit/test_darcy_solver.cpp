@@ -355,19 +355,37 @@ TEST(DarcySolver, NonFiniteSystemIsReportedNotConverged)
   EXPECT_TRUE(std::isnan(r.residual));
 }
 
-TEST(DarcySolver, CompactionRaisesPressure)
+namespace {
+
+// A nearly impermeable box (kc = 1e-12) at porosity 0.4 whose centre cell compacts
+// (dphi/dt = -0.01): diffusion moves ~1e-13 of the forcing
+const GridGeom compaction_box{0, 0, 0, 0.1, 0.1, 0.1, 5, 5, 5};
+const int compaction_centre = cell_index(compaction_box, 2, 2, 2);
+
+DarcyParams nearly_impermeable()
 {
-  // Nearly impermeable (kc = 1e-12): diffusion moves ~1e-13 of the forcing, so the
-  // change is the explicit forcing dt (-dphi/dt)/(beta phi (1-phi)) alone.
-  GridGeom g{0, 0, 0, 0.1, 0.1, 0.1, 5, 5, 5};
   DarcyParams params = unit_diffusivity();
   params.kmax = 0.0;
   params.kc = 1e-12;
   params.compressibility = 2.0;
-  DarcySolver s(g, params);
+  return params;
+}
+
+void compact_centre(DarcySolver &s)
+{
   set_porosity(s, std::vector<double>(s.ncells(), 0.4));
-  const int centre = cell_index(g, 2, 2, 2);
-  s.dphi_dt()[centre] = -0.01;  // porosity decreasing: compaction
+  s.dphi_dt()[compaction_centre] = -0.01;  // porosity decreasing: compaction
+}
+
+}  // namespace
+
+TEST(DarcySolver, CompactionRaisesPressure)
+{
+  // the change is the explicit forcing dt (-dphi/dt)/(beta phi (1-phi)) alone
+  const GridGeom &g = compaction_box;
+  DarcySolver s(g, nearly_impermeable());
+  compact_centre(s);
+  const int centre = compaction_centre;
   const double dt = 0.1;
   ASSERT_TRUE(s.step(dt, 0.0).converged);
   const double expected = dt * 0.01 / (2.0 * 0.4 * 0.6);
@@ -524,4 +542,137 @@ TEST(DarcySolver, TimeDependentBottomIsCrankNicolsonLikeTheTop)
   DarcySolver copy(column(2 * nz, 2 * height), both);
   ASSERT_TRUE(copy.set_state(full.state()));
   EXPECT_EQ(copy.p_bottom(), full.p_bottom());
+}
+
+// ---------------------------------------------------------------------------------------
+// `solver relaxed THETA TOL`: the original program's iteration
+
+namespace {
+DarcyParams relaxed(DarcyParams p, double theta, double tol)
+{
+  p.scheme = DarcyParams::Scheme::Relaxed;
+  p.theta = theta;
+  p.relaxed_tol = tol;
+  return p;
+}
+}    // namespace
+
+// Compaction of one cell of a nearly impermeable box (the CompactionRaisesPressure case):
+// the converged update is the explicit forcing dt (-dphi/dt)/(beta phi (1-phi)); one
+// relaxed sweep (a tolerance it meets at once) moves p by theta of it, and sweeps to a
+// tight tolerance reach it (the relaxation's fixed point is the Crank-Nicolson solution).
+TEST(DarcySolver, RelaxedSweepMovesThetaOfTheConvergedUpdate)
+{
+  const GridGeom &g = compaction_box;
+  DarcyParams params = nearly_impermeable();
+  params.maxiter = 2000;
+  const int centre = compaction_centre;
+  const double dt = 0.1, expected = dt * 0.01 / (2.0 * 0.4 * 0.6);
+  for (double theta : {0.05, 0.5}) {
+    DarcySolver once(g, relaxed(params, theta, 1e30));
+    compact_centre(once);
+    const StepResult r = once.step(dt, 0.0);
+    EXPECT_TRUE(r.converged);
+    EXPECT_EQ(r.iterations, 1);
+    EXPECT_NEAR(once.pressure()[centre], theta * expected, 1e-9 * expected) << theta;
+
+    DarcySolver tight(g, relaxed(params, theta, 1e-12));
+    compact_centre(tight);
+    const StepResult t = tight.step(dt, 0.0);
+    EXPECT_TRUE(t.converged);
+    EXPECT_EQ(t.iterations % 10, 1);    // tested at sweeps 0, 10, 20, ... (counted from 1)
+    // the Crank-Nicolson solution (with its 1e-12-relative diffusion, which the analytic
+    // `expected` leaves out): after n sweeps (1 - theta)^n of the update is left,
+    // (1 - theta)/theta times the last change, which the tolerance holds to 1e-12 |p|
+    DarcyParams cg = params;
+    cg.tol_rel = 1e-15;
+    DarcySolver converged(g, cg);
+    compact_centre(converged);
+    ASSERT_TRUE(converged.step(dt, 0.0).converged);
+    const double cn = converged.pressure()[centre];
+    EXPECT_NEAR(cn, expected, 1e-9 * expected);
+    EXPECT_NEAR(tight.pressure()[centre], cn, (1.0 - theta) / theta * 1e-12 * cn + 1e-17) << theta;
+  }
+}
+
+// With diffusion, one sweep from p(t) is theta times forward Euler: dp = theta dt D
+// (p_{k+1} - 2 p_k + p_{k-1})/dz^2 on a column (mirror at the bottom, the Dirichlet top a
+// half cell above the top centre: ghost 2 p_top - p, p_top the mean of old and new),
+// written out here independently of the solver's operator.
+TEST(DarcySolver, RelaxedSweepIsThetaTimesForwardEuler)
+{
+  const int nz = 8;
+  const GridGeom g = column(nz, 1.0);
+  const double dz = g.dz, dt = 1e-4, theta = 0.05, p_top_old = 0.2, p_top_new = 0.6;
+  DarcySolver s(g, relaxed(unit_diffusivity(), theta, 1e30));
+  std::vector<double> p(nz);
+  for (int k = 0; k < nz; ++k) p[k] = std::sin(1.3 * (k + 0.5) * dz) + 0.1 * k;
+  s.set_pressure(p, p_top_old);
+  ASSERT_TRUE(s.step(dt, p_top_new).converged);
+  const double p_top_mean = 0.5 * (p_top_old + p_top_new);
+  for (int k = 0; k < nz; ++k) {
+    const double below = k > 0 ? p[k - 1] : p[k];
+    const double above = k < nz - 1 ? p[k + 1] : 2.0 * p_top_mean - p[k];
+    const double euler = dt * (above - 2.0 * p[k] + below) / (dz * dz);    // D = 1
+    EXPECT_NEAR(s.pressure()[k] - p[k], theta * euler, 1e-12 * std::fabs(euler) + 1e-15) << k;
+  }
+}
+
+// The sinusoidal column of TidalTopPressureDecaysWithDepth with the original's scheme
+// (theta 0.05, TOL 1e-3) next to the converged one, against the exact solution: what
+// rerunning the paper's numerics changes there. The relaxed scheme stops after one sweep
+// wherever |p| is large, so each fluid step moves p only a twentieth of the way: the
+// pressure lags and is damped. Measured, not bounded by the scheme itself: the errors
+// are reported, and the test requires the relaxed column to stay finite and to lag (its
+// phase error larger than the converged one's) as that reasoning says.
+TEST(DarcySolver, RelaxedSchemeOnTheTidalColumn)
+{
+  const double height = 3.0, amplitude = 1.0, omega = 2 * pi, period = 1.0;
+  const int nz = 60, steps = 200;
+  const double dt = period / steps;
+  const GridGeom g = column(nz, height);
+  const std::complex<double> kappa = std::sqrt(std::complex<double>(0.0, omega));
+  auto exact = [&](double z) { return amplitude * std::cosh(kappa * z) / std::cosh(kappa * height); };
+  double errors[2][2];
+  int sweeps = 0;
+  for (int scheme = 0; scheme < 2; ++scheme) {
+    DarcyParams params = unit_diffusivity();
+    params.maxiter = 5000;
+    if (scheme == 1) params = relaxed(params, 0.05, 1e-3);
+    DarcySolver s(g, params);
+    std::vector<double> p(nz);
+    for (int k = 0; k < nz; ++k) p[k] = exact(z_centre(g, k)).imag();
+    s.set_pressure(p, 0.0);
+    const int periods = 6;    // the relaxed column's transient: it starts on the exact cycle
+    std::vector<double> a_sin(nz, 0.0), a_cos(nz, 0.0);
+    for (int n = 1; n <= (periods + 1) * steps; ++n) {
+      const double t = n * dt;
+      const StepResult r = s.step(dt, amplitude * std::sin(omega * t));
+      ASSERT_TRUE(r.converged) << "step " << n;
+      if (scheme == 1) sweeps += r.iterations;
+      if (n > periods * steps)
+        for (int k = 0; k < nz; ++k) {
+          a_sin[k] += 2.0 / steps * s.pressure()[k] * std::sin(omega * t);
+          a_cos[k] += 2.0 / steps * s.pressure()[k] * std::cos(omega * t);
+        }
+    }
+    double amp_error = 0.0, phase_error = 0.0;
+    for (int k = 0; k < nz; ++k) {
+      const std::complex<double> e = exact(z_centre(g, k));
+      ASSERT_TRUE(std::isfinite(a_sin[k]) && std::isfinite(a_cos[k]));
+      amp_error = std::max(amp_error, std::fabs(std::hypot(a_sin[k], a_cos[k]) - std::abs(e)));
+      if (std::abs(e) > 0.01 * amplitude)
+        phase_error = std::max(phase_error, std::fabs(std::remainder(
+                                                std::atan2(a_cos[k], a_sin[k]) - std::arg(e), 2 * pi)));
+    }
+    errors[scheme][0] = amp_error;
+    errors[scheme][1] = phase_error;
+  }
+  std::printf("[ report ] tidal column, D dt/dz^2 = %.2f: converged amplitude error %.3e A, phase "
+              "%.3e rad; relaxed (0.05, 1e-3) amplitude %.3e A, phase %.3e rad, %.2f sweeps per step\n",
+              dt / (g.dz * g.dz), errors[0][0], errors[0][1], errors[1][0], errors[1][1],
+              sweeps / double((6 + 1) * steps));
+  RecordProperty("relaxed_amplitude_error", sci(errors[1][0]));
+  RecordProperty("relaxed_phase_error", sci(errors[1][1]));
+  EXPECT_GT(errors[1][1], errors[0][1]);
 }

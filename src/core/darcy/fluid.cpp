@@ -76,7 +76,8 @@ DarcyFluid::DarcyFluid(const DarcySettings &settings, const GridGeom &geom, cons
                        int copies) :
     settings_(settings), grid_(coupling_grid(geom)), id_(id), field_changed_(true),
     stencils_kept_(false), started_(false), last_fluid_step_(0), force_step_(-1),
-    last_solve_{true, 0, 0.0, 0.0, -1}, porosity_warned_(false), profile_(nullptr),
+    last_solve_{true, 0, 0.0, 0.0, -1}, porosity_warned_(false), unsettled_warned_(false),
+    profile_(nullptr),
     last_profile_step_(-1), last_vtk_step_(-1)
 {
   check_grid_fits(settings, copies);
@@ -145,6 +146,7 @@ std::string DarcyFluid::box_mismatch(const HostBox &box) const
 void DarcyFluid::setup(FluidHost &host, GrainBackend &grains, const GrainStep &now)
 {
   porosity_warned_ = false;
+  unsettled_warned_ = false;
   // `novertical GROUP`, looked up at every setup: groups may be redefined between runs
   if (!settings_.novertical_group.empty()) {
     field_.horizontal_only_bit = host.group_bit(settings_.novertical_group);
@@ -153,10 +155,13 @@ void DarcyFluid::setup(FluidHost &host, GrainBackend &grains, const GrainStep &n
                 " does not exist");
   }
   if (host.is_root() && settings_.profile_every && !profile_) {
-    profile_ = std::fopen(settings_.profile_path.c_str(), "w");
+    bool has_header = false;
+    profile_ = settings_.profile_append
+        ? continue_profile(settings_.profile_path, now.step, has_header)
+        : std::fopen(settings_.profile_path.c_str(), "w");
     if (!profile_)
       host.stop_here("fix darcy/pressure: cannot open profile file " + settings_.profile_path);
-    write_profile_header(profile_, id_);
+    if (!has_header) write_profile_header(profile_, id_);
   }
   if (!started_) start(host, grains, now.step);
   apply_or_hold_force(host, grains, now.step, true);
@@ -295,6 +300,16 @@ void DarcyFluid::check_solution(FluidHost &host, long long step)
   if (!r.converged && !std::isfinite(r.residual))
     host.stop(at + "the pressure system is not finite (residual " + number(r.residual) + " in " +
               worst + "): a pressure, boundary value or permeability overflowed");
+  // the original program reports sweeps that do not settle and goes on with the last one
+  if (!r.converged && settings_.params.scheme == DarcyParams::Scheme::Relaxed) {
+    if (!unsettled_warned_)
+      host.warn(at + "the relaxed pressure iteration did not settle in " + std::to_string(r.iterations) +
+                " sweeps (largest relative change " + number(r.residual, 4) + " > " +
+                number(r.tolerance, 4) + ", in " + worst + "); it goes on with the last sweep, "
+                "as the original program did (not reported again in this run)");
+    unsettled_warned_ = true;
+    return;
+  }
   if (!r.converged)
     host.stop(at + "the pressure solve did not converge in " + std::to_string(r.iterations) +
               " iterations: residual " + number(r.residual, 4) + " > tolerance " + number(r.tolerance, 4) +
@@ -364,6 +379,7 @@ double DarcyFluid::vector(int n) const
       return balance.allowance;
     case 11:
       return solver_->active_layers();
+
     default:
       return 0.0;
   }

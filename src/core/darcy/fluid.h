@@ -156,6 +156,7 @@ class DarcyFluid {
   long long force_step_;     // the step the held forces were interpolated in, -1: none
   StepResult last_solve_;
   bool porosity_warned_;     // once per run
+  bool unsettled_warned_;    // solver relaxed: sweeps that did not settle, once per run
   std::FILE *profile_;
   long long last_profile_step_, last_vtk_step_;
 };

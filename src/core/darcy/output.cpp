@@ -1,5 +1,8 @@
 #include "darcy/output.h"
 
+#include <fstream>
+#include <sstream>
+
 namespace porewater {
 
 void write_profile_header(std::FILE *fp, const std::string &fix_id)
@@ -29,6 +32,51 @@ void write_profile(std::FILE *fp, const DarcySolver &solver, long long step, dou
                  p / nxy, phi / nxy, perm / nxy, solid > 0.0 ? solid_vz / solid : 0.0);
   }
   std::fflush(fp);
+}
+
+std::FILE *continue_profile(const std::string &path, long long step, bool &has_header)
+{
+  has_header = false;
+  std::string kept;
+  {
+    std::ifstream file(path);
+    std::stringstream whole;
+    whole << file.rdbuf();
+    std::string text = whole.str();
+    text.resize(text.find_last_of('\n') == std::string::npos ? 0 : text.find_last_of('\n') + 1);
+    std::istringstream in(text);    // complete lines only: a row cut by a kill is dropped
+    std::string line;
+    int layers_left = 0;        // layer rows still to come in the current block
+    bool keep = true;
+    size_t block_start = 0;     // where the current block begins in `kept`
+    while (std::getline(in, line)) {
+      if (line.empty()) continue;
+      if (layers_left > 0) {
+        --layers_left;
+      } else if (line[0] == '#') {
+        has_header = true;
+        keep = true;
+      } else {
+        std::istringstream head(line);
+        long long block_step = 0;
+        double time = 0.0;
+        int nlayers = 0;
+        if (!(head >> block_step >> time >> nlayers) || nlayers < 0) break;
+        layers_left = nlayers;
+        keep = block_step < step;
+        block_start = kept.size();
+      }
+      if (keep) kept += line + "\n";
+    }
+    if (layers_left > 0) kept.resize(block_start);    // a block cut short by a kill
+  }
+  std::FILE *fp = std::fopen(path.c_str(), "w");
+  if (!fp) return nullptr;
+  if (std::fputs(kept.c_str(), fp) < 0 || std::fflush(fp) != 0) {
+    std::fclose(fp);
+    return nullptr;
+  }
+  return fp;
 }
 
 namespace {

@@ -18,6 +18,12 @@ void write_profile_header(std::FILE *fp, const std::string &fix_id);
 // solid fraction 1 - phi (the layer's mean grain velocity).
 void write_profile(std::FILE *fp, const DarcySolver &solver, long long step, double time);
 
+// A profile file continued by a run that starts at `step` (`append yes`): keeps its comment
+// lines and the blocks of earlier steps (those a killed run wrote after its restart file
+// are dropped) and opens it for appending. Returns nullptr if it cannot be read or
+// rewritten; `has_header` tells whether the kept file already names its columns.
+std::FILE *continue_profile(const std::string &path, long long step, bool &has_header);
+
 // Legacy ASCII VTK rectilinear grid (cell faces as coordinates) with the cell fields
 // pressure, porosity, permeability, mean_velocity and pressure_gradient. Returns false if
 // the file cannot be written.

@@ -30,6 +30,13 @@ struct DarcyParams {
   double tol_abs = 0.0;          // stop when max|r_i/A_ii| <= tol_abs + tol_rel*max|p|
   double tol_rel = 1e-10;
   int maxiter = 1000;
+  // Converged: CG to the tolerance above. Relaxed: the original program's iteration
+  // (sphere): damped fixed-point sweeps toward the Crank-Nicolson value with relaxation
+  // theta, stopped when max |change|/|p| <= relaxed_tol at sweep 0, 10, 20, ...
+  enum class Scheme { Converged, Relaxed };
+  Scheme scheme = Scheme::Converged;
+  double theta = 0.05;
+  double relaxed_tol = 1e-3;
   Bottom bottom = Bottom::NoFlow;
   double p_bottom = 0.0;  // Dirichlet value at the bottom face
   Top top = Top::Dirichlet;
@@ -37,8 +44,9 @@ struct DarcyParams {
 
 struct StepResult {
   bool converged;
-  int iterations;
-  double residual;  // final max_i |r_i / A_ii|, pressure units (NaN if any is)
+  int iterations;   // CG iterations, or relaxed sweeps
+  double residual;  // final max_i |r_i / A_ii|, pressure units (NaN if any is); relaxed:
+                    // the largest relative change of the last tested sweep
   double tolerance; // what it had to reach
   int worst_cell;   // flat index of that largest (or first non-finite) |r_i / A_ii|, -1 if none
 };
@@ -132,6 +140,10 @@ class DarcySolver {
   // out = div(k grad p) over the active cells, boundary values p_top and p_bottom
   // (zero boundary values give the homogeneous operator used inside CG).
   void apply_operator(const double *p, double p_top, double p_bottom, double *out) const;
+  // the Crank-Nicolson system A dp = residual_ on the first m cells: CG to the tolerance,
+  // or the original's relaxed sweeps; dp in update_
+  void solve_converged(int m, double p_top, double p_bottom, StepResult &result);
+  void solve_relaxed(int m, StepResult &result);
   void porosity_from_deposits(std::vector<double> &out) const;
   void update_permeability();
   void update_pressure_gradient();

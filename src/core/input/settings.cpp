@@ -1,4 +1,6 @@
 #include "input/settings.h"
+#include "run/progress.h"
+#include <cmath>
 
 namespace porewater {
 
@@ -82,6 +84,34 @@ ShearStressSettings parse_shear_stress(KeywordReader &in)
   return s;
 }
 
+ProgressSettings parse_progress(KeywordReader &in)
+{
+  ProgressSettings s;
+  bool have_end = false;
+  while (!in.done()) {
+    const std::string &key = in.keyword();
+    if (key == "end") {
+      const double step = in.non_negative();
+      if (step != std::floor(step) || step > 9.0e18) in.fail("end expects a step number (an integer >= 0)");
+      s.end_step = (long long) step;
+      have_end = true;
+    } else if (key == "period") {
+      s.period = in.positive();
+    } else if (key == "walltime") {
+      const std::string text = in.word("HH:MM:SS, MM:SS, seconds or none");
+      s.walltime = text == "none" ? 0.0 : parse_wall_time(text);
+      if (text != "none" && !(s.walltime > 0.0))
+        in.fail("walltime expects HH:MM:SS, MM:SS, seconds (> 0) or none, got '" + text + "'");
+    } else if (key == "safety") {
+      s.safety = in.non_negative();
+    } else {
+      in.unknown_keyword({"end", "period", "walltime", "safety"});
+    }
+  }
+  in.require({"end"}, {have_end});
+  return s;
+}
+
 Ty3Settings parse_ty3(KeywordReader &in)
 {
   Ty3Settings s;
@@ -151,6 +181,14 @@ DarcySettings parse_darcy(KeywordReader &in, double box_zlo, double box_zhi)
       s.params.tol_abs = in.non_negative();
     } else if (key == "maxiter") {
       s.params.maxiter = in.count();
+    } else if (key == "solver") {
+      if (in.choice({"converged", "relaxed"}) == 1) {
+        s.params.scheme = DarcyParams::Scheme::Relaxed;
+        s.params.theta = in.at_most(1.0);
+        s.params.relaxed_tol = in.positive();
+      } else {
+        s.params.scheme = DarcyParams::Scheme::Converged;
+      }
     } else if (key == "novertical") {
       s.novertical_group = in.word("a group ID");
     } else if (key == "every") {
@@ -163,14 +201,16 @@ DarcySettings parse_darcy(KeywordReader &in, double box_zlo, double box_zhi)
     } else if (key == "profile") {
       s.profile_every = in.count();
       s.profile_path = in.word("a file name");
+    } else if (key == "append") {
+      s.profile_append = in.yes_no();
     } else if (key == "vtk") {
       s.vtk_every = in.count();
       s.vtk_prefix = in.word("a file name prefix");
     } else {
       in.unknown_keyword({"grid", "viscosity", "compressibility", "density", "permeability",
                           "top", "ztop", "bottom", "initial", "gravity", "porosity", "kmax",
-                          "tol", "atol", "maxiter", "novertical", "every", "interpolate", "zhi",
-                          "profile", "vtk"});
+                          "tol", "atol", "maxiter", "solver", "novertical", "every", "interpolate", "zhi",
+                          "profile", "append", "vtk"});
     }
   }
   in.require({"grid", "viscosity", "compressibility", "density", "permeability"},

@@ -51,6 +51,14 @@ struct Ty3Settings {
 };
 Ty3Settings parse_ty3(KeywordReader &in);
 
+// fix ID group progress end STEP [period T] [walltime HH:MM:SS|S|none] [safety F]
+struct ProgressSettings {
+  long long end_step = 0;       // the last step of the whole run (as `run STEP upto`)
+  double period = 0.0;          // > 0: report the forcing cycle reached (model time / period)
+  double walltime = 0.0;        // seconds the job may run (0: no limit)
+  double safety = 1.5;          // the next chunk is estimated as this many times the last one
+};
+ProgressSettings parse_progress(KeywordReader &in);
 // fix ID group darcy/pressure grid Nx Ny Nz viscosity MU compressibility BETA density RHO
 //   permeability KC [keywords]; see doc/fix_darcy_pressure.rst
 struct DarcySettings {
@@ -74,6 +82,7 @@ struct DarcySettings {
   bool interpolate_every_step = true;  // false: grain forces held between fluid steps
   int profile_every = 0;             // 0: no profile file
   std::string profile_path;
+  bool profile_append = false;       // continue the profile file (a run continued from a restart)
   int vtk_every = 0;                 // 0: no VTK files
   std::string vtk_prefix;
 };
