@@ -80,9 +80,10 @@ def main():
                      f"{100 * extra / loop:.2f} % of the loop time (the limit: 1 %).")
     lines.append("")
     lines.append("The loop times differ by " + ", ".join(f"{100 * r:+.1f} %" for r in ratios) +
-                 " (chunked against one chunk, rounds 1 and 2): a chunk's setup is outside its "
-                 "loop, so a difference of the same sign in both orders is a cost of the "
-                 "chunked steps themselves, one that changes sign is the noise of the cores.")
+                 " (chunked against one chunk, rounds 1 and 2). A chunk's setup and its "
+                 "checkpoint lie outside its loop and the steps do the same work, so this is the "
+                 "noise of two runs on shared cores (it takes either sign over repeated runs of "
+                 "this script); what chunking costs is the column outside the steps.")
     out = os.path.join(HERE, "checkpoint_cost_results.md")
     open(out, "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
