@@ -58,8 +58,11 @@ void ComputeDarcyGrain::compute_peratom()
   for (int i = 0; i < atom->nlocal; ++i) {
     values[i][0] = values[i][1] = 0.0;
     if (!(mask[i] & groupbit)) continue;
-    values[i][0] = porewater::field_at(g, pressure, x[i][0], x[i][1], x[i][2]);
-    values[i][1] = porewater::field_at(g, porosity, x[i][0], x[i][1], x[i][2]);
+    int idx[8];
+    double w[8];
+    porewater::stencil(g, x[i][0], x[i][1], x[i][2], idx, w);    // one stencil, both fields
+    values[i][0] = porewater::interpolate(pressure, 1, idx, w);
+    values[i][1] = porewater::interpolate(porosity, 1, idx, w);
   }
 }
 

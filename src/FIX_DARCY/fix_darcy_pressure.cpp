@@ -108,8 +108,7 @@ porewater::HostBox FixDarcyPressure::host_box() const
 porewater::GrainStep FixDarcyPressure::now() const
 {
   const bigint step = update->ntimestep;
-  return porewater::GrainStep{step, update->atime + (step - update->atimestep) * update->dt,
-                              update->dt};
+  return porewater::GrainStep{step, porewater::simulated_time(update, step), update->dt};
 }
 
 void FixDarcyPressure::setup(int /*vflag*/)

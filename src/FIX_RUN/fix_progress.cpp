@@ -7,6 +7,7 @@
 
 #include "fix_progress.h"
 
+#include "lammps_compat.h"
 #include "lammps_input.h"
 #include "run/progress.h"
 
@@ -26,7 +27,6 @@ FixProgress::FixProgress(LAMMPS *lmp, int narg, char **arg) :
 {
   settings = porewater::parse_or_stop(lmp, "fix progress", narg - 3, arg + 3,
                                       [](porewater::KeywordReader &in) { return porewater::parse_progress(in); });
-  MPI_Bcast(&started, 1, MPI_DOUBLE, 0, world);
 #if !PW_LAMMPS_RESTART_HAS_TIME
   if (update->ntimestep > 0 && comm->me == 0)
     error->warning(FLERR, "fix progress: this LAMMPS keeps no simulated time in restart files "
@@ -61,7 +61,7 @@ void FixProgress::post_run()
   porewater::ChunkProgress p{};
   p.step = update->ntimestep;
   p.end_step = settings.end_step;
-  p.model_time = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+  p.model_time = porewater::simulated_time(update, update->ntimestep);
   p.period = settings.period;
   p.chunk_steps = update->ntimestep - chunk_first_step;
   p.chunk_seconds = now - chunk_began;

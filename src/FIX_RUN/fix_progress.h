@@ -24,7 +24,7 @@ class FixProgress : public Fix {
 
  private:
   porewater::ProgressSettings settings;
-  double started;           // wall clock (MPI_Wtime, rank 0) when the fix was defined
+  double started;           // wall clock (MPI_Wtime) when the fix was defined: rank 0's counts
   double chunk_began;       // when the chunk just ended began: the previous chunk's end
   bool timing;              // chunk_began is set
   bigint chunk_first_step;  // the step that chunk began at

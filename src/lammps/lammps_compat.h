@@ -4,6 +4,7 @@
 #define PW_LAMMPS_COMPAT_H
 
 #include "atom.h"
+#include "update.h"
 
 // Grid3d, per-grid data of fixes, dump grid and fix ave/grid: LAMMPS since 22Dec2022 (the
 // GridComm of 29Sep2021 has no such interface); PW_LAMMPS_VERSION_NUMBER comes from CMake
@@ -20,6 +21,15 @@ namespace porewater {
 inline bool has_sphere_attributes(const LAMMPS_NS::Atom *atom)
 {
   return atom->radius_flag && atom->rmass_flag && atom->omega_flag && atom->torque_flag;
+}
+
+// The simulated time at `step`, as LAMMPS' `time` keyword computes it. Restart files keep
+// atime and atimestep since 3 May 2022 (our 29Sep2021: scripts/patches/lammps-restart-time.patch;
+// CMake's PW_LAMMPS_RESTART_HAS_TIME says whether this LAMMPS does); before, a run continued
+// from one starts its time at 0.
+inline double simulated_time(const LAMMPS_NS::Update *update, LAMMPS_NS::bigint step)
+{
+  return update->atime + (step - update->atimestep) * update->dt;
 }
 
 }    // namespace porewater

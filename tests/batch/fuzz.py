@@ -212,17 +212,19 @@ def valid_inputs(accel="both"):
 
 
 def thermo_values(log):
-    """Every value of the thermo tables of a log; None if no run finished."""
-    values, inside, finished = [], False, False
+    """Every value of the thermo tables of a log (the rows under each `Step` header: a step
+    number and one word per column; messages a run prints between them are not rows); None
+    if no run finished."""
+    values, columns, finished = [], 0, False
     for line in log.splitlines():
         words = line.split()
         if words[:1] == ["Step"]:
-            inside = True
+            columns = len(words)
             continue
         if line.startswith("Loop time"):
-            inside, finished = False, True
+            columns, finished = 0, True
             continue
-        if inside and words and words[0] != "progress:":    # fix progress's line ends a run
+        if columns and len(words) == columns and words[0].isdigit():
             values.extend(words)
     return values if finished else None
 

@@ -316,3 +316,50 @@ TEST(FixDarcyPressure, UpwardGradientFluidisesTheBedAboveCritical)
   // suction of the dilating bed
   EXPECT_GT(above, 3e-3);
 }
+
+// compute darcy/grain: the steady linear column of OneGrainFeelsTheGradientAndBuoyancy
+// (p = 1000 - 1500 z to the solve's 5e-9), with the porosity clamp raised so that the
+// grains' deposits show in phi. At a grain of the group: p as the linear profile (trilinear
+// interpolation is exact for a linear field; the field's own error 5e-9), phi as the
+// trilinear hat weights of the fix's cell porosities written out here (periodic in x, y;
+// the grain lies between cell centres in z); zero for a grain outside the group.
+TEST(ComputeDarcyGrain, PressureAndPorosityAtTheGrains)
+{
+  Lammps l;
+  l.commands("units si\natom_style sphere\natom_modify map array\nboundary p p f\n"
+             "region box block 0 0.5 0 0.5 0 1\ncreate_box 1 box\n"
+             "create_atoms 1 single 0.13 0.41 0.437\ncreate_atoms 1 single 0.38 0.07 0.71\n"
+             "set type 1 diameter 0.02\nset type 1 density 2600\ntimestep 0.02\n"
+             "group one id 1\n");
+  l.command("fix fl all darcy/pressure grid 2 2 10" + unit_diffusivity +
+            " bottom 1000 top -500 tol 1e-13 porosity 0.1 0.99999");
+  l.command("compute water one darcy/grain fl");
+  l.command("run 300");
+  // the library interface computes a per-atom compute that is not current
+  double **water = (double **) lammps_extract_compute(l.lmp, "water", LMP_STYLE_ATOM,
+                                                      LMP_TYPE_ARRAY);
+  ASSERT_NE(water, nullptr);
+  const double *one = water[l.atom()->map(1)], *two = water[l.atom()->map(2)];
+  const double p1 = one[0], phi1 = one[1];
+  EXPECT_NEAR(p1, 1000.0 - 1500.0 * 0.437, 5e-9);
+  const auto phi = field(l, "porosity", 40);
+  const double x[3] = {0.13, 0.41, 0.437}, d[3] = {0.25, 0.25, 0.1};
+  double expected = 0.0, lowest = 1.0;
+  for (int c = 0; c < 40; ++c) {
+    const int ijk[3] = {c % 2, (c / 2) % 2, c / 4};
+    double w = 1.0;
+    for (int a = 0; a < 3; ++a) {
+      double offset = x[a] - (ijk[a] + 0.5) * d[a];
+      if (a < 2) offset -= 0.5 * std::round(offset / 0.5);    // periodic: nearest image
+      w *= std::max(0.0, 1.0 - std::fabs(offset) / d[a]);
+    }
+    expected += w * phi[c];
+    lowest = std::min(lowest, phi[c]);
+  }
+  // the deposits show: the nearest cell of a grain takes at least 1/8 of its volume,
+  // 1/8 x 4.19e-6 / 6.25e-3 m3 = 8.4e-5 of the cell (measured 4.9e-4)
+  EXPECT_LT(lowest, 1.0 - 8.4e-5);
+  EXPECT_NEAR(phi1, expected, 1e-15);
+  EXPECT_EQ(two[0], 0.0);    // not in the group
+  EXPECT_EQ(two[1], 0.0);
+}

@@ -17,6 +17,14 @@ namespace {
 
 const int STATE_HEADER = 13;    // values before the solver state, see restart_state()
 
+// the first non-finite value's index, -1 if all are finite
+int first_nonfinite(const std::vector<double> &values)
+{
+  for (size_t c = 0; c < values.size(); ++c)
+    if (!std::isfinite(values[c])) return (int) c;
+  return -1;
+}
+
 std::string number(double v, int digits = 6)
 {
   char text[40];
@@ -288,32 +296,32 @@ BoundaryValues DarcyFluid::boundary_values(FluidHost &host, long long step)
 
 void DarcyFluid::check_solution(FluidHost &host, long long step)
 {
-  const std::string at = "fix darcy/pressure: step " + std::to_string(step) + ": ";
   const std::vector<double> &p = solver_->pressure();
   const StepResult &r = last_solve_;
-  for (int c = 0; c < solver_->ncells(); ++c)
-    if (!std::isfinite(p[c]))
-      host.stop(at + "pressure " + number(p[c]) + " in " + describe_cell(c) +
-                " after the fluid step (solver residual " + number(r.residual) + ", " +
-                std::to_string(r.iterations) + " iterations)");
+  const int bad = first_nonfinite(p);
+  if (bad < 0 && r.converged) return;    // every fluid step: no message composed
+  const std::string at = "fix darcy/pressure: step " + std::to_string(step) + ": ";
+  if (bad >= 0)
+    host.stop(at + "pressure " + number(p[bad]) + " in " + describe_cell(bad) +
+              " after the fluid step (solver residual " + number(r.residual) + ", " +
+              std::to_string(r.iterations) + " iterations)");
   const std::string worst = r.worst_cell >= 0 ? describe_cell(r.worst_cell) : "no cell";
-  if (!r.converged && !std::isfinite(r.residual))
+  if (!std::isfinite(r.residual))
     host.stop(at + "the pressure system is not finite (residual " + number(r.residual) + " in " +
               worst + "): a pressure, boundary value or permeability overflowed");
   // the original program reports sweeps that do not settle and goes on with the last one
-  if (!r.converged && settings_.params.scheme == DarcyParams::Scheme::Relaxed) {
+  if (settings_.params.scheme == DarcyParams::Scheme::Relaxed) {
     if (!unsettled_warned_)
       host.warn(at + "the relaxed pressure iteration did not settle in " + std::to_string(r.iterations) +
                 " sweeps (largest relative change " + number(r.residual, 4) + " > " +
                 number(r.tolerance, 4) + ", in " + worst + "); it goes on with the last sweep, "
                 "as the original program did (not reported again in this run)");
     unsettled_warned_ = true;
-    return;
-  }
-  if (!r.converged)
+  } else {
     host.stop(at + "the pressure solve did not converge in " + std::to_string(r.iterations) +
               " iterations: residual " + number(r.residual, 4) + " > tolerance " + number(r.tolerance, 4) +
               ", largest in " + worst + "; raise maxiter or tol");
+  }
 }
 
 std::string DarcyFluid::describe_cell(int cell) const
@@ -379,7 +387,6 @@ double DarcyFluid::vector(int n) const
       return balance.allowance;
     case 11:
       return solver_->active_layers();
-
     default:
       return 0.0;
   }

@@ -181,15 +181,6 @@ PW_INLINE double interpolate(const double *field, int stride, const int idx[8],
   return sum;
 }
 
-// A cell field at a point, with the stencil the grains' coupling uses (compute darcy/grain)
-PW_INLINE double field_at(const GridGeom &g, const double *field, double x, double y, double z)
-{
-  int idx[8];
-  double w[8];
-  stencil(g, x, y, z, idx, w);
-  return interpolate(field, 1, idx, w);
-}
-
 }  // namespace porewater
 
 #endif

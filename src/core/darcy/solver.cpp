@@ -309,7 +309,7 @@ void DarcySolver::solve_relaxed(int m, StepResult &result)
       if (finite && relative > largest) largest = relative, worst = c;
       direction_[c] = relaxed;
     }
-    std::copy(direction_.begin(), direction_.begin() + m, update_.begin());
+    std::swap(update_, direction_);
     result.iterations = sweep + 1;
     result.residual = finite ? largest : NAN;
     result.worst_cell = worst;
