@@ -26,7 +26,10 @@ def run_lmp(workdir, infile, variables, ranks=1, plugin_dir=None, log="log.lammp
     cmd += ["lmp", "-in", infile, "-log", log, "-screen", "none"]
     for k, v in variables.items():
         cmd += ["-var", k, str(v)]
-    proc = subprocess.Popen(cmd, cwd=workdir, env=env)
+    # numpy's OpenMP runtime binds this very process under OMP_PROC_BIND=spread (to core 0),
+    # and children inherit that mask: the runs of a pool would share one core
+    proc = subprocess.Popen(cmd, cwd=workdir, env=env,
+                            preexec_fn=lambda: os.sched_setaffinity(0, range(os.cpu_count())))
     _, status, usage = os.wait4(proc.pid, 0)
     if status != 0:
         raise subprocess.CalledProcessError(status, cmd)
@@ -65,7 +68,7 @@ def loop_time(log, last=True):
 def prepare(workdir, extra=()):
     os.makedirs(workdir, exist_ok=True)
     for name in os.listdir(EXAMPLE):
-        if name.startswith("in.") or name == "consolidated_0.data":
+        if name.startswith("in.") or name.startswith("consolidated_"):
             shutil.copy(os.path.join(EXAMPLE, name), workdir)
     for name in extra:
         shutil.copy(os.path.join(HERE, name), workdir)

@@ -22,8 +22,14 @@ Part "full" (fidelity_full.py): the example at Table S1 size on 2 ranks for --bu
   seconds (preparation included), its cost per step against the projection and its first
   part of the cycle against the reduced default's at the same phases.
 
+Part "bisect": the friction while preparing that starts the original's bed (size spread
+  0.009) at the original run's coordination (fidelity_factors.bisect_mu_prep).
+Part "factors" (fidelity_factors.py): each difference from the original program alone from
+  the default, then all together (2 cycles; k_n x10 1.6, x100 0.6); one table, one figure.
+Part "factor_stress" --factor NAME: that factor's settings held at constant stress, two tau/N.
+
 Usage (after scripts/setup.sh; source scripts/env.sh):
-    /usr/bin/python3 bench/fidelity.py --part cycle|permeability|creep|full|all [--work DIR]
+    /usr/bin/python3 bench/fidelity.py --part cycle|permeability|creep|full|bisect|factors|all [--work DIR]
         [--jobs N] [--budget S] [--analyse-only]
 `--part all` is cycle, permeability and creep; full runs apart (it needs both cores alone).
 Runs whose output is complete in --work are not repeated; the parameters were fixed before
@@ -41,6 +47,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
+import fidelity_factors
 import fidelity_full
 import fidelity_stress
 from example_runs import complete, load, prepare, read_cost, timed_run
@@ -75,7 +82,9 @@ def smoothed_velocity(t, x):
     return v
 
 
-def cycle_metrics(c, wet, period=PERIOD, cycles=CYCLES):
+def cycle_metrics(c, wet, period=PERIOD, cycles=CYCLES, stuck_until=0.0):
+    """per cycle; the slip: the first above SLIP_VELOCITY after phase `stuck_until` (the stuck
+    part of the cycle: a blip as the last cycle's slip ends is not this one's)"""
     t, x, z = c["time"], c["x_top"], c["z_wall"]
     v = smoothed_velocity(t, x)
     rows = []
@@ -91,6 +100,7 @@ def cycle_metrics(c, wet, period=PERIOD, cycles=CYCLES):
         # a slip of the cycle before that goes on into this one is not this cycle's
         slow = np.nonzero(vi <= SLIP_VELOCITY)[0]
         first_slow = slow[0] if len(slow) else len(vi)
+        first_slow = max(first_slow, np.searchsorted(phase, stuck_until))
         fast = first_slow + np.nonzero(vi[first_slow:] > SLIP_VELOCITY)[0]
         if len(fast):
             i0 = fast[0]
@@ -362,10 +372,17 @@ def write(part, lines):
     print("\n".join(lines))
 
 
+FACTOR_LABEL = lambda name: fidelity_factors.FACTORS[name][0]
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--part", default="all",
-                    choices=["cycle", "permeability", "creep", "full", "all"])
+                    choices=["cycle", "permeability", "creep", "full", "bisect", "factors",
+                             "factor_stress", "all"])
+    ap.add_argument("--factor", default="all",
+                    help="--part factor_stress: the factor run whose settings are held at "
+                         "constant stress (fidelity_factors.FACTORS)")
     ap.add_argument("--work", default="/tmp/pw_fidelity")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--budget", type=float, default=3600.0,
@@ -374,6 +391,30 @@ def main():
     args = ap.parse_args()
     pool = ThreadPoolExecutor(args.jobs)
     jobs_map = lambda f, xs: list(pool.map(f, xs))
+    if args.part == "bisect":
+        probes = fidelity_factors.bisect_mu_prep(args.work, jobs_map)
+        write("bisect", header("bisect", {}) + fidelity_factors.bisect_table(probes))
+        return
+    if args.part == "factor_stress":
+        results = fidelity_factors.constant_stress(args.work, args.factor, jobs_map)
+        write("factor_stress", header("factor_stress", {}) + fidelity_factors.stress_table(
+            args.factor, results))
+        return
+    if args.part == "factors":
+        if not args.analyse_only:
+            fidelity_factors.run_all(args.work, jobs_map)
+        original = fidelity_factors.original_metrics(os.path.join(HERE, "original_run_contacts.txt"))
+        lines, results = fidelity_factors.table(args.work, original, 2)
+        first, _ = fidelity_factors.table(args.work, original, 1)
+        fidelity_factors.plot(results, os.path.join(HERE, "fidelity_factors.png"))
+        costs = {FACTOR_LABEL(n): read_cost(os.path.join(args.work, "factors", n))
+                 for n in fidelity_factors.FACTORS}
+        write("factors", header("factors", {k: v for k, v in costs.items() if v}) + [
+            "## Beds", ""] + fidelity_factors.beds_table(args.work) + [
+            "", "## Each factor alone, then all together: cycle 2", ""] + lines + [
+            "", "## Cycle 1 (from the unsheared bed)", ""] + first + [
+            "", "![n and the minimum coordination per factor](fidelity_factors.png)"])
+        return
     if args.part == "full":
         if not args.analyse_only:
             fidelity_full.run_full(args.work, args.budget)

@@ -4,6 +4,8 @@ before (1 Hz, beta_f x100) and the reduced case of in.params (README.md, "The re
 and its scaling").
 
     /usr/bin/python3 groups.py [--markdown]
+    /usr/bin/python3 groups.py --bed FILE    (a bed of one's own: the -var values that keep
+                                              the reduced case's groups for its H and phi)
 
 H (top of the highest grain over the floor) and phi (1 - grain volume/(L_x L_y H)) of the
 reduced cases come from their consolidated states; Table S1's are the supplement's 0.47 m at
@@ -33,6 +35,41 @@ CASES = {
                     f=0.4, dz=(0.2383 + 0.06) / 4, H=0.2383, phi=0.3759, mass_factor=0.493,
                     gamma_w=100.0, gamma_p=0.0),
 }
+
+
+# the shipped bed (consolidated_0.data) and the in.params values chosen for it
+SHIPPED = dict(H=0.2383, phi=0.3759, cell_z=0.078, mu_f=1.93e-7, mass_factor=0.493)
+
+
+def bed_geometry(path):
+    """H (top of the highest grain over the floor) and phi = 1 - grain volume/(L_x L_y H)
+    of a LAMMPS data file of atom_style sphere (id type diameter density x y z)"""
+    lines = open(path).read().splitlines()
+    box = {}
+    for line in lines[:40]:
+        parts = line.split()
+        if len(parts) == 4 and parts[2].endswith("lo"):
+            box[parts[2][0]] = float(parts[1]) - float(parts[0])
+    start = next(i for i, l in enumerate(lines) if l.startswith("Atoms")) + 2
+    top, volume = 0.0, 0.0
+    for line in lines[start:]:
+        if not line.strip():
+            break
+        v = line.split()
+        r = float(v[2]) / 2
+        top = max(top, float(v[6]) + r)
+        volume += 4.0 / 3.0 * math.pi * r ** 3
+    return top, 1 - volume / (box["x"] * box["y"] * top)
+
+
+def bed_parameters(height, phi):
+    """cell_z, mu_f and mass_factor of the reduced case that keep its groups for a bed of
+    height H and porosity phi: the fluid cells' top face at the same fraction of a cell under
+    the plate, mu_f H^2/(k T sigma0) (Kozeny-Carman k) and m_w H/(A L_x L_y T^2)"""
+    k = lambda p: p ** 3 / (1 - p) ** 2
+    return {"cell_z": SHIPPED["cell_z"] * height / SHIPPED["H"],
+            "mu_f": SHIPPED["mu_f"] * (k(phi) / k(SHIPPED["phi"])) * (SHIPPED["H"] / height) ** 2,
+            "mass_factor": SHIPPED["mass_factor"] * SHIPPED["H"] / height}
 
 
 def groups(c):
@@ -82,6 +119,11 @@ def groups(c):
 
 
 def main():
+    if "--bed" in sys.argv:
+        height, phi = bed_geometry(sys.argv[sys.argv.index("--bed") + 1])
+        print("H %.4f m, phi %.4f; keeping the reduced case's groups: %s" % (height, phi, " ".join(
+            "-var %s %.4g" % kv for kv in bed_parameters(height, phi).items())))
+        return
     names = list(CASES)
     rows = {n: groups(CASES[n]) for n in names}
     keys = list(rows[names[0]])

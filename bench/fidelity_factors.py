@@ -1,0 +1,343 @@
+"""What sets the creep exponent and the contact collapse (bench/fidelity.py --part factors):
+each way the reduced example differs from the original program, alone from the shipped
+default, then all of them together (the example's `-var original 1`), 2 cycles each (CYCLES).
+
+Beds (prepared once, before any tidal run; their targets fixed in advance):
+  spread   in.pack/in.consolidate frictionless, log-normal radii of spread 0.009 (the
+           original's packing scripts)
+  original the same with friction mu_prep MU_PREP_ORIGINAL while packing and consolidating:
+           the value that starts the tidal run at the original's coordination, 4.58 (the
+           first row of shared/spec/original_run_contacts.txt), found by bisection on beds alone
+  kn10, kn100  the shipped bed consolidated again (in.consolidate) at k_n x10, x100
+Every bed runs with the groups of the example kept for its own H and phi (bed_groups):
+the fluid cells' height, mu_f (mu_f H^2/(k T sigma0)) and the plate mass (m_w H/(A Lx Ly T^2)).
+"""
+import os
+import shutil
+import sys
+
+import numpy as np
+
+from example_runs import EXAMPLE, complete, load, prepare, read_cost, run_lmp, timed_run
+sys.path.insert(0, EXAMPLE)
+from groups import bed_geometry, bed_parameters as bed_groups    # noqa: E402
+
+KN = 1.16e7                               # examples/tidal_shear/in.params, reduced case
+GAMMA_W = 100.0
+SPREAD = 0.009                            # the original's log-normal spread of ln r
+MU_PREP_ORIGINAL = 0.4 / 3             # --part bisect: 4.53 at 0.4/3, 4.13 at 0.8/3
+TARGET_Z = 4.58                           # the original run's first coordination (t = 0.01 s)
+# cycles per run: 2 (cycle 1 from the unsheared bed, cycle 2 kept); k_n x10 1.6 (cycle 2's
+# creep, phases 0.2-0.6, not its slip), x100 0.6 (cycle 1's creep): 3.2x and 10x the steps
+# of a cycle, at ~3,000 steps/s per run with two side by side on the development machine
+CYCLES, KN10_CYCLES, KN100_CYCLES = 2, 1.6, 0.6
+RESETTLE = 0.05                           # s: the shipped bed consolidated again at k_n x10,
+                                          # x100 (as bench/fidelity_full.py for Table S1's k_n)
+
+BEDS = {  # name: (in.pack / in.consolidate -var overrides, None: from the shipped bed)
+    "spread": ({"radius_spread": SPREAD, "mu_prep": 0.0}, True),
+    "kn10": ({"kn": 10 * KN, "gamma_w": GAMMA_W * 10 ** 0.5, "settle_time": RESETTLE}, False),
+    "kn100": ({"kn": 100 * KN, "gamma_w": GAMMA_W * 10.0, "settle_time": RESETTLE}, False),
+}
+
+
+def prepare_bed(work, name, variables, pack):
+    """pack (or take the shipped bed) and consolidate; the bed's data file"""
+    d = os.path.join(work, "beds", name)
+    out = os.path.join(d, "bed.data")
+    if os.path.exists(out):
+        return out
+    prepare(d)
+    if pack:
+        run_lmp(d, "in.pack", dict(variables, output="packed.data"), log="log.pack")
+        source = "packed.data"
+    else:
+        source = "consolidated_0.data"
+    run_lmp(d, "in.consolidate", dict(variables, input=source, output="bed.data"),
+            log="log.consolidate")
+    return out
+
+
+def first_coordination(work, name, data, variables):
+    """the coordination of the first time-series row (2.5 ms) of the tidal run on a bed"""
+    d = os.path.join(work, "beds", name, "probe")
+    prepare(d)
+    shutil.copy(data, os.path.join(d, "bed.data"))
+    run_lmp(d, "in.tidal_shear", dict(variables, data="bed.data", run_steps=1170))
+    return load(os.path.join(d, "timeseries.txt"))["coordination"][0]
+
+
+def bisect_mu_prep(work, jobs_map, low=0.0, high=0.4, rounds=3, tol=0.05):
+    """mu_prep (spread 0.009) whose bed starts at TARGET_Z: two probes a round (both
+    cores), the bracket cut to the third that holds the target; the probes as rows"""
+    probes = []
+
+    def probe(mu):
+        name = "probe_mu%.4f" % mu
+        data = prepare_bed(work, name, {"radius_spread": SPREAD, "mu_prep": mu}, True)
+        height, phi = bed_geometry(data)
+        z = first_coordination(work, name, data, bed_groups(height, phi))
+        return mu, z, height, phi
+
+    for _ in range(rounds):
+        mus = [low + (high - low) * f for f in (1.0 / 3.0, 2.0 / 3.0)]
+        found = jobs_map(probe, mus)
+        probes += found
+        best = min(found, key=lambda p: abs(p[1] - TARGET_Z))
+        if abs(best[1] - TARGET_Z) < tol:
+            break
+        # coordination falls with friction: keep the third that brackets the target
+        (m1, z1, _, _), (m2, z2, _, _) = found
+        low, high = (low, m1) if TARGET_Z > z1 else ((m1, m2) if TARGET_Z > z2 else (m2, high))
+    return sorted(probes)
+
+
+# name: (label, bed or None for the shipped one, in.tidal_shear -var overrides, cycles)
+FACTORS = {
+    "default": ("shipped default", None, {}, CYCLES),
+    "bed": ("1. bed of the original (friction + spread)", "original", {}, CYCLES),
+    "kn10": ("2. k_n x10", "kn10", {"kn": 10 * KN, "gamma_w": GAMMA_W * 10 ** 0.5}, KN10_CYCLES),
+    "kn100": ("2. k_n x100 (Table S1's)", "kn100", {"kn": 100 * KN, "gamma_w": GAMMA_W * 10.0},
+              KN100_CYCLES),
+    "ty3": ("3. integrator nve/sphere/ty3", None, {"integrator": "nve/sphere/ty3"}, CYCLES),
+    "relaxed": ("4. pressure iteration relaxed", None, {"solver": "relaxed"}, CYCLES),
+    "spread": ("5. size spread alone", "spread", {}, CYCLES),
+    "all": ("6. all together (-var original 1)", None, {"original": 1}, CYCLES),
+}
+# the order that keeps both cores busy: the longest first
+RUN_ORDER = ["kn100", "kn10", "bed", "all", "default", "ty3", "relaxed", "spread"]
+
+
+def factor_variables(work, name):
+    """the run's -var overrides: the factor's, with the bed's data file and its groups"""
+    _, bed, overrides, cycles = FACTORS[name]
+    variables = dict(overrides, cycles=cycles)
+    if bed:
+        data = os.path.join(work, "beds", bed, "bed.data")
+        variables.update(bed_groups(*bed_geometry(data)), data="bed.data")
+    return variables
+
+
+def run_factor(work, name):
+    d = os.path.join(work, "factors", name)
+    cycles = FACTORS[name][3]
+    if complete(os.path.join(d, "timeseries.txt"), cycles * PERIOD):
+        return name, None
+    prepare(d)
+    variables = factor_variables(work, name)
+    if "data" in variables:
+        shutil.copy(os.path.join(work, "beds", FACTORS[name][1], "bed.data"), d)
+    return name, timed_run(d, "in.tidal_shear", variables)
+
+
+# ---------------------------------------------------------------- metrics
+
+PERIOD, AMP = 2.5, 70.0e3                 # in.params (reduced case)
+ORIGINAL_PERIOD, ORIGINAL_CYCLES = 5.0, 9  # Table S1: 0.2 Hz, 45 s analysed
+LANDING = 0.1                             # cycle after the slip's end
+
+
+def phase_mask(t, period, cycle, lo, hi):
+    return (t >= (cycle - 1 + lo) * period) & (t < (cycle - 1 + hi) * period)
+
+
+def after_min_n(phase):
+    """cycles after the minimum of N (phase 0.75), in [0, 1): a collapse in the landing
+    just past the cycle's end stays next to one just before it"""
+    return (phase - 0.75) % 1.0
+
+
+def original_metrics(path):
+    """coordination of the original run's own data file: start, while creeping (phases
+    0.2-0.6), the minimum and its phase, over cycles 2-9 (the first dropped, as here)"""
+    t, _, z = np.loadtxt(path, unpack=True)
+    creep, mins = [], []
+    for k in range(2, ORIGINAL_CYCLES + 1):
+        creep.append(np.mean(z[phase_mask(t, ORIGINAL_PERIOD, k, 0.2, 0.6)]))
+        inside = phase_mask(t, ORIGINAL_PERIOD, k, 0.0, 1.0)
+        i = np.argmin(z[inside])
+        mins.append((z[inside][i], after_min_n(t[inside][i] / ORIGINAL_PERIOD - (k - 1))))
+    return {"z_start": z[0], "z_creep": creep, "z_min": [m[0] for m in mins],
+            "z_min_phase": [m[1] for m in mins]}
+
+
+def factor_metrics(c, cycles):
+    """per cycle {cycle: metrics}: fidelity.cycle_metrics' slip for the whole cycles, plus
+    coordination while creeping (phases 0.2-0.6), suction during the slip and the plate's
+    landing; n of each cycle's creep windows (a partial cycle: those it covers)"""
+    import fidelity
+    t = c["time"]
+    whole = int(np.floor(cycles + 1e-9))
+    out = {r["cycle"]: r for r in fidelity.cycle_metrics(c, True, PERIOD, whole, stuck_until=0.2)} \
+        if whole else {}
+    pts = fidelity.creep_points(c, cycles=int(np.ceil(cycles - 1e-9)))
+    for k in range(1, int(np.ceil(cycles - 1e-9)) + 1):
+        r = out.setdefault(k, {"cycle": k})
+        creep = phase_mask(t, PERIOD, k, 0.2, 0.6)
+        if t[creep].max() < (k - 1 + 0.59) * PERIOD:
+            continue                      # the run ends before this cycle's creep does
+        r["z_creep"] = np.mean(c["coordination"][creep])
+        r["fit"] = fidelity.power_law(pts[pts[:, 2] == k])
+        if "onset" in r:
+            slip = phase_mask(t, PERIOD, k, r["onset"], r["end"] + 1e-9)
+            r["suction"] = np.min((c["p_mean"] - c["p_top"])[slip]) / AMP
+            land = phase_mask(t, PERIOD, k, r["end"], r["end"] + LANDING)
+            excess = (c["N_grains"] - c["N_applied"])[land] / AMP
+            # only where the run covers the whole window (a slip to the cycle's end: none)
+            covered = t[-1] >= (k - 1 + r["end"] + LANDING) * PERIOD - 1e-9
+            r["landing"] = np.sqrt(np.mean(excess ** 2)) if covered else np.nan
+    return out
+
+
+def cell(r, key, f, scale=1.0):
+    return f % (scale * r[key]) if key in r and np.isfinite(r[key]) else "-"
+
+
+def original_row(o, cycles):
+    lo = lambda v, f: (f + " (" + f + "-" + f + ")") % (np.mean(v), min(v), max(v))
+    phases = sorted(o["z_min_phase"])
+    return ("| paper / the original's data file (cycles %s) | 6-11 | %s | %s (median %.3f, "
+            "range %.3f-%.3f) | | ~0.61 | ~0.81 | 0.26-0.38 (yield) | | | ~70 days on a GPU |" % (
+                cycles, lo(o["z_creep"], "%.2f"), lo(o["z_min"], "%.3f"), np.median(phases),
+                phases[0], phases[-1]))
+
+
+def table(work, original, cycle):
+    """one row per factor, its metrics in the given cycle"""
+    lines = ["| run | n (95 %) | Z creeping | min Z (cycles after the minimum of N) | slip (mm) | onset | end "
+             "| tau/N at onset | suction in slip (A) | landing rms (A) | wall s (CPU s) |",
+             "|" + "---|" * 11, original_row(original, "2-%d" % ORIGINAL_CYCLES)]
+    results = {}
+    for name, (label, _, _, cycles) in FACTORS.items():
+        d = os.path.join(work, "factors", name)
+        if not complete(os.path.join(d, "timeseries.txt"), cycles * PERIOD):
+            lines.append("| %s | not run |" % label + " |" * 9)
+            continue
+        per_cycle = factor_metrics(load(os.path.join(d, "timeseries.txt")), cycles)
+        results[name] = per_cycle
+        r = per_cycle.get(cycle, {})
+        if "z_creep" not in r:
+            lines.append("| %s | the run ends before cycle %d's creep |" % (label, cycle) + " |" * 9)
+            continue
+        cost = read_cost(d)
+        fit = r.get("fit")
+        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            label, "%.1f ± %.1f" % fit[:2] if fit else "too few", cell(r, "z_creep", "%.2f"),
+            "%s (%s)" % (cell(r, "z_min", "%.2f"),
+                         "%.3f" % after_min_n(r["z_min_phase"]) if "z_min" in r else "-"),
+            cell(r, "slip", "%.0f", 1e3), cell(r, "onset", "%.3f"), cell(r, "end", "%.3f"),
+            cell(r, "ratio", "%.2f"), cell(r, "suction", "%.3f"), cell(r, "landing", "%.2f"),
+            "%.0f (%.0f)" % (cost[1], cost[0]) if cost else ""))
+    return lines, results
+
+
+def plot(results, path):
+    import matplotlib.pyplot as plt
+    names = [n for n in FACTORS if n in results]
+    fig, ax = plt.subplots(1, 2, figsize=(10, 4))
+    for i, name in enumerate(names):
+        for k, style in ((1, dict(mfc="none")), (2, {})):
+            r = results[name].get(k, {})
+            if r.get("fit"):
+                ax[0].errorbar(i + 0.1 * (k - 1.5), r["fit"][0], yerr=r["fit"][1], fmt="o",
+                               color="C0", label="cycle %d" % k if i == 0 else None, **style)
+            if "z_min" in r:
+                ax[1].plot(i + 0.1 * (k - 1.5), r["z_min"], "o", color="C3",
+                           label="cycle %d" % k if i == 0 else None, **style)
+    ax[0].axhspan(6, 11, color="0.85", label="paper: 6-11")
+    ax[1].axhspan(0.03, 0.05, color="0.85", label="original run: 0.03-0.05")
+    ax[0].set_ylabel("creep exponent n of the cycle (95 %)")
+    ax[1].set_ylabel("minimum coordination of the cycle")
+    ax[1].set_yscale("log")
+    for a in ax:
+        a.set_xticks(range(len(names)))
+        a.set_xticklabels([FACTORS[n][0].split(" (")[0] for n in names], rotation=35,
+                          ha="right", fontsize=7)
+        a.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+
+
+BED_RUN = {"shipped": "default", "original": "bed", "spread": "spread", "kn10": "kn10",
+           "kn100": "kn100"}
+
+
+def beds_table(work):
+    """each bed's H, phi, the parameters that keep its groups, and its first coordination"""
+    lines = ["| bed | H (m) | phi | coordination at 2.5 ms | cell_z, mu_f, mass_factor |",
+             "|---|---|---|---|---|"]
+    for name, run in BED_RUN.items():
+        data = os.path.join(EXAMPLE, "consolidated_0.data") if name == "shipped" else \
+            os.path.join(work, "beds", name, "bed.data")
+        series = os.path.join(work, "factors", run, "timeseries.txt")
+        if not os.path.exists(data):
+            continue
+        h, phi = bed_geometry(data)
+        g = bed_groups(h, phi)
+        z0 = "%.3f" % load(series)["coordination"][0] if os.path.exists(series) else "-"
+        lines.append("| %s | %.4f | %.4f | %s | %.4f, %.3e, %.3f |" % (
+            name, h, phi, z0, g["cell_z"], g["mu_f"], g["mass_factor"]))
+    return lines
+
+
+def run_all(work, jobs_map):
+    beds = dict(BEDS, original=({"radius_spread": SPREAD, "mu_prep": MU_PREP_ORIGINAL}, True))
+    jobs_map(lambda n: prepare_bed(work, n, *beds[n]), list(beds))
+    for name, cpu in jobs_map(lambda n: run_factor(work, n), RUN_ORDER):
+        print("%s: %s" % (name, "done before" if cpu is None else "%.0f s CPU" % cpu), flush=True)
+
+
+def bisect_table(probes):
+    lines = ["Beds of spread %g packed and consolidated with friction mu_prep; the target: "
+             "coordination %.2f at the tidal run's first sample (2.5 ms)." % (SPREAD, TARGET_Z), "",
+             "| mu_prep | coordination at 2.5 ms | H (m) | phi |", "|---|---|---|---|"]
+    lines += ["| %.4f | %.3f | %.4f | %.4f |" % p for p in probes]
+    return lines
+
+
+# constant-stress repeat for the run closest to the paper: the same protocol as
+# fidelity_stress (N 25 kPa, no forcing, 2 s held, creep over 1-2 s), at two tau/N below the
+# sheared default's yield (0.30-0.40 at 25 kPa), from that run's unsheared bed
+STRESS_N, STRESS_RATIOS = 25.0e3, (0.2, 0.3)
+
+
+def constant_stress(work, name, jobs_map):
+    import fidelity_stress
+    variables = factor_variables(work, name)
+    variables.pop("cycles")
+    mass_factor = float(variables.get("mass_factor", 0.493 if variables.get("original") != 1
+                                      else 0.4703))
+
+    def one(ratio):
+        d = os.path.join(work, "stress_" + name, "r%.2f" % ratio)
+        seconds = fidelity_stress.HOLD_TIME
+        out = os.path.join(d, "timeseries.txt")
+        if not complete(out, seconds):
+            prepare(d)
+            if "data" in variables:
+                shutil.copy(os.path.join(work, "beds", FACTORS[name][1], "bed.data"), d)
+            kn = float(variables.get("kn", KN))
+            run_lmp(d, "in.tidal_shear", dict(
+                variables, amp=0, sigma0=STRESS_N, tau=ratio * STRESS_N,
+                mass_factor=mass_factor * 80.0e3 / STRESS_N,
+                run_steps=int(round(seconds / fidelity_stress.time_step(kn)))))
+        c = load(out)
+        r = {"held": abs(np.polyfit(c["time"][-50:], c["x_top"][-50:], 1)[0]) < 1e-2}
+        if r["held"]:
+            r.update(fidelity_stress.measure(c))
+        return ratio, r
+    return jobs_map(one, STRESS_RATIOS)
+
+
+def stress_table(name, results):
+    lines = ["%s, N %.0f kPa held 2 s: gamma_dot over 1-2 s (95 %%), bench/fidelity_stress.py's "
+             "measure; the shipped default's beds did not creep (|gamma_dot| < 1e-8 1/s)."
+             % (FACTORS[name][0], STRESS_N / 1e3), "",
+             "| tau/N | holds | gamma_dot (1/s) | over 0.5-1 s | take-up (mm) |", "|---|---|---|---|---|"]
+    for ratio, r in results:
+        if not r["held"]:
+            lines.append("| %.2f | fails | | | |" % ratio)
+        else:
+            lines.append("| %.2f | yes | %.1e ± %.1e | %.1e | %.3f |" % (
+                ratio, r["rate"], r["half"], r["rate_early"], 1e3 * r["take_up"]))
+    return lines
