@@ -372,9 +372,6 @@ def write(part, lines):
     print("\n".join(lines))
 
 
-FACTOR_LABEL = lambda name: fidelity_factors.FACTORS[name][0]
-
-
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--part", default="all",
@@ -407,8 +404,8 @@ def main():
         lines, results = fidelity_factors.table(args.work, original, 2)
         first, _ = fidelity_factors.table(args.work, original, 1)
         fidelity_factors.plot(results, os.path.join(HERE, "fidelity_factors.png"))
-        costs = {FACTOR_LABEL(n): read_cost(os.path.join(args.work, "factors", n))
-                 for n in fidelity_factors.FACTORS}
+        costs = {label: read_cost(os.path.join(args.work, "factors", n))
+                 for n, (label, _, _, _) in fidelity_factors.FACTORS.items()}
         write("factors", header("factors", {k: v for k, v in costs.items() if v}) + [
             "## Beds", ""] + fidelity_factors.beds_table(args.work) + [
             "", "## Each factor alone, then all together: cycle 2", ""] + lines + [

@@ -25,7 +25,7 @@ from groups import bed_geometry, bed_parameters as bed_groups    # noqa: E402
 KN = 1.16e7                               # examples/tidal_shear/in.params, reduced case
 GAMMA_W = 100.0
 SPREAD = 0.009                            # the original's log-normal spread of ln r
-MU_PREP_ORIGINAL = 0.4 / 3             # --part bisect: 4.53 at 0.4/3, 4.13 at 0.8/3
+MU_PREP_ORIGINAL = 0.4 / 3                # --part bisect: 4.53 at 0.4/3, 4.13 at 0.8/3
 TARGET_Z = 4.58                           # the original run's first coordination (t = 0.01 s)
 # cycles per run: 2 (cycle 1 from the unsheared bed, cycle 2 kept); k_n x10 1.6 (cycle 2's
 # creep, phases 0.2-0.6, not its slip), x100 0.6 (cycle 1's creep): 3.2x and 10x the steps
@@ -34,10 +34,13 @@ CYCLES, KN10_CYCLES, KN100_CYCLES = 2, 1.6, 0.6
 RESETTLE = 0.05                           # s: the shipped bed consolidated again at k_n x10,
                                           # x100 (as bench/fidelity_full.py for Table S1's k_n)
 
-BEDS = {  # name: (in.pack / in.consolidate -var overrides, None: from the shipped bed)
+# k_n x10, x100 with the wall dashpot's damping ratio gamma_w/(2 sqrt(k_n m)) kept
+STIFF = {"kn10": {"kn": 10 * KN, "gamma_w": GAMMA_W * 10 ** 0.5},
+         "kn100": {"kn": 100 * KN, "gamma_w": GAMMA_W * 10.0}}
+BEDS = {  # name: (in.pack / in.consolidate -var overrides, packed anew or the shipped bed)
     "spread": ({"radius_spread": SPREAD, "mu_prep": 0.0}, True),
-    "kn10": ({"kn": 10 * KN, "gamma_w": GAMMA_W * 10 ** 0.5, "settle_time": RESETTLE}, False),
-    "kn100": ({"kn": 100 * KN, "gamma_w": GAMMA_W * 10.0, "settle_time": RESETTLE}, False),
+    "kn10": (dict(STIFF["kn10"], settle_time=RESETTLE), False),
+    "kn100": (dict(STIFF["kn100"], settle_time=RESETTLE), False),
 }
 
 
@@ -96,9 +99,8 @@ def bisect_mu_prep(work, jobs_map, low=0.0, high=0.4, rounds=3, tol=0.05):
 FACTORS = {
     "default": ("shipped default", None, {}, CYCLES),
     "bed": ("1. bed of the original (friction + spread)", "original", {}, CYCLES),
-    "kn10": ("2. k_n x10", "kn10", {"kn": 10 * KN, "gamma_w": GAMMA_W * 10 ** 0.5}, KN10_CYCLES),
-    "kn100": ("2. k_n x100 (Table S1's)", "kn100", {"kn": 100 * KN, "gamma_w": GAMMA_W * 10.0},
-              KN100_CYCLES),
+    "kn10": ("2. k_n x10", "kn10", STIFF["kn10"], KN10_CYCLES),
+    "kn100": ("2. k_n x100 (Table S1's)", "kn100", STIFF["kn100"], KN100_CYCLES),
     "ty3": ("3. integrator nve/sphere/ty3", None, {"integrator": "nve/sphere/ty3"}, CYCLES),
     "relaxed": ("4. pressure iteration relaxed", None, {"solver": "relaxed"}, CYCLES),
     "spread": ("5. size spread alone", "spread", {}, CYCLES),
@@ -181,16 +183,12 @@ def factor_metrics(c, cycles):
         if "onset" in r:
             slip = phase_mask(t, PERIOD, k, r["onset"], r["end"] + 1e-9)
             r["suction"] = np.min((c["p_mean"] - c["p_top"])[slip]) / AMP
-            land = phase_mask(t, PERIOD, k, r["end"], r["end"] + LANDING)
-            excess = (c["N_grains"] - c["N_applied"])[land] / AMP
             # only where the run covers the whole window (a slip to the cycle's end: none)
-            covered = t[-1] >= (k - 1 + r["end"] + LANDING) * PERIOD - 1e-9
-            r["landing"] = np.sqrt(np.mean(excess ** 2)) if covered else np.nan
+            if t[-1] >= (k - 1 + r["end"] + LANDING) * PERIOD - 1e-9:
+                land = phase_mask(t, PERIOD, k, r["end"], r["end"] + LANDING)
+                excess = (c["N_grains"] - c["N_applied"])[land] / AMP
+                r["landing"] = np.sqrt(np.mean(excess ** 2))
     return out
-
-
-def cell(r, key, f, scale=1.0):
-    return f % (scale * r[key]) if key in r and np.isfinite(r[key]) else "-"
 
 
 def original_row(o, cycles):
@@ -207,6 +205,7 @@ def table(work, original, cycle):
     lines = ["| run | n (95 %) | Z creeping | min Z (cycles after the minimum of N) | slip (mm) | onset | end "
              "| tau/N at onset | suction in slip (A) | landing rms (A) | wall s (CPU s) |",
              "|" + "---|" * 11, original_row(original, "2-%d" % ORIGINAL_CYCLES)]
+    from fidelity import fmt
     results = {}
     for name, (label, _, _, cycles) in FACTORS.items():
         d = os.path.join(work, "factors", name)
@@ -222,11 +221,11 @@ def table(work, original, cycle):
         cost = read_cost(d)
         fit = r.get("fit")
         lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
-            label, "%.1f ± %.1f" % fit[:2] if fit else "too few", cell(r, "z_creep", "%.2f"),
-            "%s (%s)" % (cell(r, "z_min", "%.2f"),
-                         "%.3f" % after_min_n(r["z_min_phase"]) if "z_min" in r else "-"),
-            cell(r, "slip", "%.0f", 1e3), cell(r, "onset", "%.3f"), cell(r, "end", "%.3f"),
-            cell(r, "ratio", "%.2f"), cell(r, "suction", "%.3f"), cell(r, "landing", "%.2f"),
+            label, "%.1f ± %.1f" % fit[:2] if fit else "too few", fmt(r, "z_creep", "%.2f"),
+            "%s (%s)" % (fmt(r, "z_min", "%.2f"),
+                         "%.3f" % after_min_n(r["z_min_phase"]) if "z_min" in r else "none"),
+            fmt(r, "slip", "%.0f", 1e3), fmt(r, "onset", "%.3f"), fmt(r, "end", "%.3f"),
+            fmt(r, "ratio", "%.2f"), fmt(r, "suction", "%.3f"), fmt(r, "landing", "%.2f"),
             "%.0f (%.0f)" % (cost[1], cost[0]) if cost else ""))
     return lines, results
 
@@ -301,12 +300,21 @@ def bisect_table(probes):
 STRESS_N, STRESS_RATIOS = 25.0e3, (0.2, 0.3)
 
 
+def recorded(work, name, key):
+    """a parameter of a factor's run as in.checkpoint_params recorded it"""
+    for line in open(os.path.join(work, "factors", name, "checkpoint_params.txt")):
+        v = line.split()
+        if len(v) == 4 and v[1] == "ck_" + key:
+            return v[3]
+    raise KeyError(key)
+
+
 def constant_stress(work, name, jobs_map):
     import fidelity_stress
     variables = factor_variables(work, name)
     variables.pop("cycles")
-    mass_factor = float(variables.get("mass_factor", 0.493 if variables.get("original") != 1
-                                      else 0.4703))
+    mass_factor = float(recorded(work, name, "mass_factor"))
+    dt = float(recorded(work, name, "dt"))
 
     def one(ratio):
         d = os.path.join(work, "stress_" + name, "r%.2f" % ratio)
@@ -316,11 +324,10 @@ def constant_stress(work, name, jobs_map):
             prepare(d)
             if "data" in variables:
                 shutil.copy(os.path.join(work, "beds", FACTORS[name][1], "bed.data"), d)
-            kn = float(variables.get("kn", KN))
             run_lmp(d, "in.tidal_shear", dict(
                 variables, amp=0, sigma0=STRESS_N, tau=ratio * STRESS_N,
-                mass_factor=mass_factor * 80.0e3 / STRESS_N,
-                run_steps=int(round(seconds / fidelity_stress.time_step(kn)))))
+                mass_factor=mass_factor * fidelity_stress.SIGMA0 / STRESS_N,
+                run_steps=int(round(seconds / dt))))
         c = load(out)
         r = {"held": abs(np.polyfit(c["time"][-50:], c["x_top"][-50:], 1)[0]) < 1e-2}
         if r["held"]:

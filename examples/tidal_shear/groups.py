@@ -38,7 +38,8 @@ CASES = {
 
 
 # the shipped bed (consolidated_0.data) and the in.params values chosen for it
-SHIPPED = dict(H=0.2383, phi=0.3759, cell_z=0.078, mu_f=1.93e-7, mass_factor=0.493)
+SHIPPED = dict(H=CASES["reduced"]["H"], phi=CASES["reduced"]["phi"], cell_z=0.078,
+               mu_f=CASES["reduced"]["mu_f"], mass_factor=CASES["reduced"]["mass_factor"])
 
 
 def bed_geometry(path):
