@@ -12,18 +12,26 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLE = os.path.join(HERE, "..", "examples", "tidal_shear")
 
 
-def run_lmp(workdir, infile, variables, ranks=1, plugin_dir=None, log="log.lammps"):
-    """lmp -in infile in workdir (niced, one OpenMP thread); returns its CPU seconds."""
+# the example's bed before the original's preparation became the default (in.params `bed`):
+# fidelity.py's cycle, permeability, creep and full parts and the factors' "former default"
+# were measured on it, and name it to run as they did
+FRICTIONLESS = {"bed": "frictionless"}
+
+
+def run_lmp(workdir, infile, variables, ranks=1, plugin_dir=None, log="log.lammps", args=(),
+            threads=1):
+    """lmp -in infile in workdir (niced; `threads` OpenMP threads, extra lmp `args` such as
+    KOKKOS' -k on t 2 -sf kk); returns its CPU seconds."""
     # OMP_PROC_BIND (scripts/env.sh: spread) pins a 1-thread run to core 0: concurrent runs
     # would share that core
-    env = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false", OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND="false",
+               OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     if plugin_dir:
         env["LD_LIBRARY_PATH"] = plugin_dir + ":" + env.get("LD_LIBRARY_PATH", "")
     cmd = ["nice", "-n", "10"]
     if ranks > 1:
         cmd += ["mpirun", "--oversubscribe", "-np", str(ranks), "-x", "LD_LIBRARY_PATH", "-x", "OMP_PROC_BIND"]
-    cmd += ["lmp", "-in", infile, "-log", log, "-screen", "none"]
+    cmd += ["lmp", "-in", infile, "-log", log, "-screen", "none"] + list(args)
     for k, v in variables.items():
         cmd += ["-var", k, str(v)]
     # numpy's OpenMP runtime binds this very process under OMP_PROC_BIND=spread (to core 0),
@@ -41,17 +49,19 @@ def time_step(kn, eps=0.07, radius=0.01, rho=2600.0):
     return eps / np.sqrt(kn / (rho * 4.0 / 3.0 * np.pi * radius ** 3))
 
 
-def timed_run(workdir, infile, variables, ranks=1):
-    """run_lmp, its CPU and wall seconds written to workdir/cost.txt"""
+def timed_run(workdir, infile, variables, ranks=1, args=(), threads=1):
+    """run_lmp, its CPU and wall seconds written to workdir/cost.txt (with the load average
+    of the last minute before and after)"""
+    load = os.getloadavg()[0]
     start = time.time()
-    cpu = run_lmp(workdir, infile, variables, ranks=ranks)
+    cpu = run_lmp(workdir, infile, variables, ranks=ranks, args=args, threads=threads)
     with open(os.path.join(workdir, "cost.txt"), "w") as f:
-        f.write("%.1f %.1f\n" % (cpu, time.time() - start))
+        f.write("%.1f %.1f %.2f %.2f\n" % (cpu, time.time() - start, load, os.getloadavg()[0]))
     return cpu
 
 
 def read_cost(workdir):
-    """[CPU s, wall s] of timed_run, or None"""
+    """[CPU s, wall s] of timed_run (and the load before and after where recorded), or None"""
     path = os.path.join(workdir, "cost.txt")
     return [float(v) for v in open(path).read().split()] if os.path.exists(path) else None
 

@@ -50,7 +50,7 @@ import numpy as np
 import fidelity_factors
 import fidelity_full
 import fidelity_stress
-from example_runs import complete, load, prepare, read_cost, timed_run
+from example_runs import FRICTIONLESS, complete, load, prepare, read_cost, timed_run
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CYCLES = 4
@@ -72,7 +72,7 @@ def run_variant(work, name):
     if complete(out, CYCLES * PERIOD):
         return name, None
     prepare(d)
-    return name, timed_run(d, "in.tidal_shear", dict(VARIANTS[name][2], cycles=CYCLES))
+    return name, timed_run(d, "in.tidal_shear", dict(FRICTIONLESS, **VARIANTS[name][2], cycles=CYCLES))
 
 
 def smoothed_velocity(t, x):
@@ -301,7 +301,7 @@ def run_slow(work):
     out = os.path.join(d, "timeseries.txt")
     if not complete(out, SLOW["cycles"] / SLOW["freq"]):
         prepare(d)
-        timed_run(d, "in.tidal_shear", SLOW)
+        timed_run(d, "in.tidal_shear", dict(FRICTIONLESS, **SLOW))
     return load(out)
 
 

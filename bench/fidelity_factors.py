@@ -1,6 +1,7 @@
 """What sets the creep exponent and the contact collapse (bench/fidelity.py --part factors):
-each way the reduced example differs from the original program, alone from the shipped
-default, then all of them together (the example's `-var original 1`), 2 cycles each (CYCLES).
+each way the reduced example differs from the original program, alone from the frictionless
+bed (the example's default until the original's bed, factor 1, became it; in.params `bed`),
+then all of them together (the example's `-var original 1`), 2 cycles each (CYCLES).
 
 Beds (prepared once, before any tidal run; their targets fixed in advance):
   spread   in.pack/in.consolidate frictionless, log-normal radii of spread 0.009 (the
@@ -8,7 +9,7 @@ Beds (prepared once, before any tidal run; their targets fixed in advance):
   original the same with friction mu_prep MU_PREP_ORIGINAL while packing and consolidating:
            the value that starts the tidal run at the original's coordination, 4.58 (the
            first row of shared/spec/original_run_contacts.txt), found by bisection on beds alone
-  kn10, kn100  the shipped bed consolidated again (in.consolidate) at k_n x10, x100
+  kn10, kn100  the frictionless bed consolidated again (in.consolidate) at k_n x10, x100
 Every bed runs with the groups of the example kept for its own H and phi (bed_groups):
 the fluid cells' height, mu_f (mu_f H^2/(k T sigma0)) and the plate mass (m_w H/(A Lx Ly T^2)).
 """
@@ -18,7 +19,7 @@ import sys
 
 import numpy as np
 
-from example_runs import EXAMPLE, complete, load, prepare, read_cost, run_lmp, timed_run
+from example_runs import EXAMPLE, FRICTIONLESS, complete, load, prepare, read_cost, run_lmp, timed_run
 sys.path.insert(0, EXAMPLE)
 from groups import bed_geometry, bed_parameters as bed_groups    # noqa: E402
 
@@ -39,8 +40,8 @@ STIFF = {"kn10": {"kn": 10 * KN, "gamma_w": GAMMA_W * 10 ** 0.5},
          "kn100": {"kn": 100 * KN, "gamma_w": GAMMA_W * 10.0}}
 BEDS = {  # name: (in.pack / in.consolidate -var overrides, packed anew or the shipped bed)
     "spread": ({"radius_spread": SPREAD, "mu_prep": 0.0}, True),
-    "kn10": (dict(STIFF["kn10"], settle_time=RESETTLE), False),
-    "kn100": (dict(STIFF["kn100"], settle_time=RESETTLE), False),
+    "kn10": (dict(FRICTIONLESS, **STIFF["kn10"], settle_time=RESETTLE), False),
+    "kn100": (dict(FRICTIONLESS, **STIFF["kn100"], settle_time=RESETTLE), False),
 }
 
 
@@ -55,7 +56,7 @@ def prepare_bed(work, name, variables, pack):
         run_lmp(d, "in.pack", dict(variables, output="packed.data"), log="log.pack")
         source = "packed.data"
     else:
-        source = "consolidated_0.data"
+        source = "consolidated_frictionless_0.data"
     run_lmp(d, "in.consolidate", dict(variables, input=source, output="bed.data"),
             log="log.consolidate")
     return out
@@ -97,12 +98,13 @@ def bisect_mu_prep(work, jobs_map, low=0.0, high=0.4, rounds=3, tol=0.05):
 
 # name: (label, bed or None for the shipped one, in.tidal_shear -var overrides, cycles)
 FACTORS = {
-    "default": ("shipped default", None, {}, CYCLES),
+    "default": ("frictionless bed (the former default)", None, FRICTIONLESS, CYCLES),
     "bed": ("1. bed of the original (friction + spread)", "original", {}, CYCLES),
     "kn10": ("2. k_n x10", "kn10", STIFF["kn10"], KN10_CYCLES),
     "kn100": ("2. k_n x100 (Table S1's)", "kn100", STIFF["kn100"], KN100_CYCLES),
-    "ty3": ("3. integrator nve/sphere/ty3", None, {"integrator": "nve/sphere/ty3"}, CYCLES),
-    "relaxed": ("4. pressure iteration relaxed", None, {"solver": "relaxed"}, CYCLES),
+    "ty3": ("3. integrator nve/sphere/ty3", None, dict(FRICTIONLESS, integrator="nve/sphere/ty3"),
+            CYCLES),
+    "relaxed": ("4. pressure iteration relaxed", None, dict(FRICTIONLESS, solver="relaxed"), CYCLES),
     "spread": ("5. size spread alone", "spread", {}, CYCLES),
     "all": ("6. all together (-var original 1)", None, {"original": 1}, CYCLES),
 }
@@ -266,7 +268,7 @@ def beds_table(work):
     lines = ["| bed | H (m) | phi | coordination at 2.5 ms | cell_z, mu_f, mass_factor |",
              "|---|---|---|---|---|"]
     for name, run in BED_RUN.items():
-        data = os.path.join(EXAMPLE, "consolidated_0.data") if name == "shipped" else \
+        data = os.path.join(EXAMPLE, "consolidated_frictionless_0.data") if name == "shipped" else \
             os.path.join(work, "beds", name, "bed.data")
         series = os.path.join(work, "factors", run, "timeseries.txt")
         if not os.path.exists(data):
@@ -338,7 +340,7 @@ def constant_stress(work, name, jobs_map):
 
 def stress_table(name, results):
     lines = ["%s, N %.0f kPa held 2 s: gamma_dot over 1-2 s (95 %%), bench/fidelity_stress.py's "
-             "measure; the shipped default's beds did not creep (|gamma_dot| < 1e-8 1/s)."
+             "measure; the frictionless beds (the former default) did not creep (|gamma_dot| < 1e-8 1/s)."
              % (FACTORS[name][0], STRESS_N / 1e3), "",
              "| tau/N | holds | gamma_dot (1/s) | over 0.5-1 s | take-up (mm) |", "|---|---|---|---|---|"]
     for ratio, r in results:

@@ -14,7 +14,7 @@ import subprocess
 
 import numpy as np
 
-from example_runs import EXAMPLE, HERE, load, loop_time, prepare, run_lmp, time_step, timed_run
+from example_runs import EXAMPLE, FRICTIONLESS, HERE, load, loop_time, prepare, run_lmp, time_step, timed_run
 
 SOFT_KN = 1.16e7
 SETTLE_TIME = 0.6                   # s: in.pack at most (its halt on the kinetic energy waits
@@ -32,15 +32,15 @@ def prepare_full(work):
         shutil.copy(os.path.join(EXAMPLE, name), d)
     shutil.copy(os.path.join(HERE, "in.tidal_shear_timed"), d)
     steps = []
-    if not os.path.exists(os.path.join(d, "packed_1.data")):
-        steps.append(("in.pack", {"full": 1, "kn": SOFT_KN, "settle_time": SETTLE_TIME}, 2,
+    if not os.path.exists(os.path.join(d, "packed_frictionless_1.data")):
+        steps.append(("in.pack", {**FRICTIONLESS, "full": 1, "kn": SOFT_KN, "settle_time": SETTLE_TIME}, 2,
                       "log.pack"))
     if not os.path.exists(os.path.join(d, "consolidated_soft.data")):
-        steps.append(("in.consolidate", {"full": 1, "kn": SOFT_KN,
+        steps.append(("in.consolidate", {**FRICTIONLESS, "full": 1, "kn": SOFT_KN,
                                          "output": "consolidated_soft.data"}, 2, "log.consolidate_soft"))
-    if not os.path.exists(os.path.join(d, "consolidated_1.data")):
+    if not os.path.exists(os.path.join(d, "consolidated_frictionless_1.data")):
         # at Table S1's k_n the plate and the grains settle in milliseconds (checked in the log)
-        steps.append(("in.consolidate", {"full": 1, "input": "consolidated_soft.data",
+        steps.append(("in.consolidate", {**FRICTIONLESS, "full": 1, "input": "consolidated_soft.data",
                                          "settle_time": 0.05}, 2, "log.consolidate"))
     for infile, variables, ranks, log in steps:
         run_lmp(d, infile, variables, ranks=ranks, log=log)
@@ -54,7 +54,7 @@ def run_full(work, budget_s):
         return d
     left = int(budget_s - 60)    # the run's setup and output
     timeout = "%02d:%02d:%02d" % (left // 3600, left // 60 % 60, left % 60)
-    timed_run(d, "in.tidal_shear_timed", {"full": 1, "timeout": timeout,
+    timed_run(d, "in.tidal_shear_timed", {**FRICTIONLESS, "full": 1, "timeout": timeout,
                                           "write_state": "state_end"}, ranks=2)
     reference_runs(work)
     return d
@@ -74,7 +74,7 @@ def reference_runs(work):
     for ranks in (1, 2):
         log = "log.%drank" % ranks
         if not os.path.exists(os.path.join(d, log)):
-            run_lmp(d, "in.tidal_shear", {"run_steps": REFERENCE_STEPS}, ranks=ranks, log=log)
+            run_lmp(d, "in.tidal_shear", dict(FRICTIONLESS, run_steps=REFERENCE_STEPS), ranks=ranks, log=log)
         seconds, steps = loop_time(os.path.join(d, log), last=False)
         out.append(1e6 * seconds / steps)
     return out

@@ -15,7 +15,7 @@ import shutil
 import numpy as np
 from scipy import stats
 
-from example_runs import complete, load, prepare, run_lmp, time_step
+from example_runs import FRICTIONLESS, complete, load, prepare, run_lmp, time_step
 
 SIGMA0 = 80.0e3
 DIAMETER, RHO = 0.02, 2600.0
@@ -27,7 +27,7 @@ CHECK_TIME, HOLD_TIME = 0.3, 2.0       # s
 RATE_WINDOW = (1.0, 2.0)               # s: after the start-up transient (checked: 0.5-1 s)
 BLOCK = 0.1                            # s: block means remove the plate's shear vibration
 STATES = {
-    "consolidated": ("consolidated, never sheared", "consolidated_0.data"),
+    "consolidated": ("consolidated, never sheared", "consolidated_frictionless_0.data"),
     "sheared": ("sheared 1.2 tidal cycles", "sheared_1.data"),
 }
 
@@ -38,7 +38,7 @@ def sheared_state(work):
     path = os.path.join(d, "sheared_1.data")
     if not os.path.exists(path):
         prepare(d)
-        run_lmp(d, "in.tidal_shear", {"cycles": 1.2, "write_state": "sheared_1"})
+        run_lmp(d, "in.tidal_shear", dict(FRICTIONLESS, cycles=1.2, write_state="sheared_1"))
     return path
 
 
@@ -60,7 +60,7 @@ def run_test(work, state, n, ratio, seconds, fluid=1, run=True):
         if state == "sheared":
             shutil.copy(sheared_state(work), d)
         # the plate keeps the example's mass: mass_factor scales with 1/N
-        run_lmp(d, "in.tidal_shear", {"amp": 0, "sigma0": n, "tau": ratio * n, "data": data,
+        run_lmp(d, "in.tidal_shear", {**FRICTIONLESS, "amp": 0, "sigma0": n, "tau": ratio * n, "data": data,
                                       "mass_factor": 0.493 * SIGMA0 / n, "fluid": fluid,
                                       "run_steps": int(round(seconds / DT))})
     return load(out)

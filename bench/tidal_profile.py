@@ -71,7 +71,7 @@ def prepare(workdir):
             shutil.copy(os.path.join(EXAMPLE, name), workdir)
     for name in ("in.tidal_granular", "in.replicate_bed"):
         shutil.copy(os.path.join(HERE, name), workdir)
-    run_lmp(workdir, "in.replicate_bed", {"in": "consolidated_0.data", "out": "bed_9600.data"},
+    run_lmp(workdir, "in.replicate_bed", {"in": "consolidated_frictionless_0.data", "out": "bed_9600.data"},
             timed=False)
 
 

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """examples/tidal_shear after a slip: does the plate ring, and what damps it?
 
-Part "ringdown" (bench/in.plate_ringdown, 0.3 s each): the plate on the shipped bed under a
+Part "ringdown" (bench/in.plate_ringdown, 0.3 s each): the plate on the frictionless bed (the
+  example's default before; `original_bed`: on today's default bed) under a
   stress step 80 -> 100 kPa, no shear: the plate-bed mode's frequency f_p (FFT peak of the
   grain force on the plate) and damping ratio zeta (slope of the log Hilbert envelope over
   the part of the record where the envelope lies between 1e-3 and 0.3 of its first value),
@@ -35,7 +36,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from scipy.signal import hilbert
 
-from example_runs import complete, load, prepare, run_lmp, time_step
+from example_runs import FRICTIONLESS, complete, load, prepare, run_lmp, time_step
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 A, SIGMA0, T_CYCLE, DT = 70e3, 80e3, 2.5, time_step(1.16e7)
@@ -48,6 +49,9 @@ RINGDOWN = {  # name: (label, variables)
     "absolute": ("absolute, gamma_w 100", {}),
     "plate": ("absolute + plate 4e3", {"plate_damping": 4.0e3}),
     "wet_absolute": ("absolute, wet", {"fluid": 1}),
+    # the example's default bed (the original's preparation): its plate mode for groups.py
+    "original_bed": ("absolute, the original's bed (default)", {"bed": "original"}),
+    "original_bed_wet": ("absolute, wet, the original's bed (default)", {"bed": "original", "fluid": 1}),
 }
 CYCLE = {  # name: (label, variables, ranks, plugin)
     "wet_absolute": ("wet, absolute (default)", {}, 1, None),
@@ -147,7 +151,7 @@ def main():
             out = os.path.join(d, "ringdown.txt")
             if not args.analyse_only and not complete(out, 0.3):
                 prepare(d, ["in.plate_ringdown"])
-                run_lmp(d, "in.plate_ringdown", variables)
+                run_lmp(d, "in.plate_ringdown", dict(FRICTIONLESS, **variables))
             if complete(out, 0.3):
                 rings[name] = (label, ringdown(out))
     if args.part in ("cycle", "all"):
@@ -159,7 +163,7 @@ def main():
                 continue
             if not args.analyse_only and not complete(out, 3.0):
                 prepare(d)
-                run_lmp(d, "in.tidal_shear", dict(variables, run_steps=CYCLE_STEPS), ranks,
+                run_lmp(d, "in.tidal_shear", dict(FRICTIONLESS, **variables, run_steps=CYCLE_STEPS), ranks,
                         plugin_dir)
             if complete(out, 3.0):
                 cycles[name] = (label, load(out))

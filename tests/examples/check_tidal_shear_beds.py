@@ -1,0 +1,116 @@
+#!/usr/bin/env python3
+"""examples/tidal_shear starts from the bed and with the numerics its switches name.
+
+Short runs (2 time-series rows, 2,340 steps) of:
+- the default: the shipped bed prepared as the original program's (consolidated_0.data),
+  velocity Verlet and the converged pressure solve;
+- `-var original 1`: the same bed with the original's integrator (nve/sphere/ty3) and
+  pressure iteration (relaxed; it ran: sweeps > 0);
+- `-var bed frictionless`: the former default, consolidated_frictionless_0.data.
+Each run's fluid cell height, mu_f and plate mass must be those that keep the reduced case's
+groups for its bed's own H and phi (groups.py bed_parameters, to the 4 digits in.params
+gives them: 5e-4), every value finite; the original's bed starts at the original run's
+coordination, 4.58 (shared/spec/original_run_contacts.txt's first row), within 0.1 (it was
+prepared for that: 4.53). `-var bed` with another value stops with an error naming the
+allowed values.
+
+Usage: check_tidal_shear_beds.py --lmp LMP --plugin-dir DIR
+"""
+import argparse
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+EXAMPLE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples",
+                       "tidal_shear")
+sys.path.insert(0, EXAMPLE)
+from groups import bed_geometry, bed_parameters    # noqa: E402
+
+# name: (-var switches, bed file, integrator, solver, coordination at the first row or None)
+CASES = {
+    "default": ([], "consolidated_0.data", "nve/sphere", "converged", 4.58),
+    "original": (["original", "1"], "consolidated_0.data", "nve/sphere/ty3", "relaxed", 4.58),
+    "frictionless": (["bed", "frictionless"], "consolidated_frictionless_0.data", "nve/sphere",
+                     "converged", None),
+}
+ok = True
+
+
+def check(cond, what):
+    global ok
+    print(("ok    " if cond else "FAIL  ") + what)
+    ok &= bool(cond)
+
+
+def run(lmp, work, env, switches, log):
+    return subprocess.run([lmp, "-in", "in.tidal_shear", "-var", "run_steps", "2340", "-log", log,
+                           "-screen", "none"] + [a for i in range(0, len(switches), 2)
+                                                 for a in ("-var", *switches[i:i + 2])],
+                          cwd=work, env=env, capture_output=True, text=True)
+
+
+def case(lmp, work, env, name):
+    switches, bed, integrator, solver, z_start = CASES[name]
+    print("-- %s (%s)" % (name, " ".join(switches) or "no switches"))
+    for f in ("timeseries.txt", "checkpoint_params.txt"):
+        if os.path.exists(os.path.join(work, f)):
+            os.remove(os.path.join(work, f))
+    out = run(lmp, work, env, switches, "log." + name)
+    check(out.returncode == 0, "runs (exit %d)" % out.returncode)
+    params = {}
+    for line in open(os.path.join(work, "checkpoint_params.txt")):
+        v = line.split()
+        if len(v) == 4 and v[0] == "variable":
+            params[v[1][3:]] = v[3]
+    log = open(os.path.join(work, "log." + name)).read()
+    names = open(os.path.join(work, "timeseries.txt")).readline().lstrip("# ").split()
+    rows = [[float(x) for x in l.split()] for l in open(os.path.join(work, "timeseries.txt"))
+            if not l.startswith("#")]
+    col = {n: k for k, n in enumerate(names)}
+    check("read_data %s" % bed in log, "starts from %s" % bed)
+    check(params.get("integrator") == integrator, "integrator %s" % params.get("integrator"))
+    check(params.get("solver") == solver, "solver %s" % params.get("solver"))
+    height, phi = bed_geometry(os.path.join(EXAMPLE, bed))
+    for key, value in bed_parameters(height, phi).items():
+        got = float(params[key])
+        check(abs(got / value - 1) < 5e-4, "%s %s keeps the groups for H %.4f, phi %.4f (%.6g)"
+              % (key, params[key], height, phi, value))
+    if z_start is not None:
+        z0 = rows[0][col["coordination"]]
+        check(abs(z0 - z_start) < 0.1, "starts at coordination %.3f (the original: %.2f)" % (z0, z_start))
+    check(len(rows) == 2 and all(math.isfinite(x) for r in rows for x in r), "2 finite rows")
+    if solver == "relaxed":
+        check(all(r[col["solver_iters"]] > 0 for r in rows), "relaxed sweeps %s" % (
+            [r[col["solver_iters"]] for r in rows]))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--lmp", required=True)
+    ap.add_argument("--plugin-dir", required=True)
+    args = ap.parse_args()
+    work = tempfile.mkdtemp()
+    try:
+        for name in os.listdir(EXAMPLE):
+            if name.startswith("in.") or name.endswith(".data"):
+                shutil.copy(os.path.join(EXAMPLE, name), work)
+        env = dict(os.environ, OMP_NUM_THREADS="1",
+                   LD_LIBRARY_PATH=args.plugin_dir + ":" + os.environ.get("LD_LIBRARY_PATH", ""))
+        for name in CASES:
+            case(args.lmp, work, env, name)
+        print("-- bed packed")
+        out = run(args.lmp, work, env, ["bed", "packed"], "log.bad")
+        said = out.stdout + open(os.path.join(work, "log.bad")).read()
+        check(out.returncode != 0, "-var bed packed stops (exit %d)" % out.returncode)
+        check("ERROR: bed is packed: original (the default) or frictionless" in said,
+              "and says which values are allowed")
+        return 0 if ok else 1
+    finally:
+        shutil.rmtree(work)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
