@@ -11,8 +11,8 @@ Usage:
     bench/callgrind_asm.py OUT path/to/porewater_styles.so SYMBOL_SUBSTRING [--min COUNT]
 (the styles' object: plugin/porewater_styles.so since the plugin has a loader, porewater.so;
 plugin/porewater.so itself in builds before that)
-SYMBOL_SUBSTRING picks the first symbol (demangled) containing it; pass enough of it to be
-unique, e.g. 'FixDarcyPressure::deposit_grains(double)'. --min hides runs executed fewer
+SYMBOL_SUBSTRING picks, of the symbols (demangled) containing it, the one whose instructions
+ran most; pass enough of it to be unique, e.g. 'FixDarcyPressure::deposit_grains(double)'. --min hides runs executed fewer
 times (default 1000).
 """
 import argparse, collections, re, subprocess, sys
@@ -50,17 +50,22 @@ def self_costs(path, obj):
     return cost
 
 
-def symbol_range(obj, pattern):
+def symbol_range(obj, pattern, cost):
+    """the symbol containing `pattern` whose instructions ran most (a function and its
+    clones, e.g. `.isra.0`, share a name)"""
     syms = []
     for line in subprocess.run(["nm", "-C", "-n", obj], capture_output=True, text=True).stdout.splitlines():
         parts = line.split(" ", 2)
         if len(parts) == 3 and parts[0]:
             syms.append((int(parts[0], 16), parts[2]))
+    found = []
     for k, (start, sym) in enumerate(syms):
         if pattern in sym:
             stop = next((a for a, _ in syms[k + 1:] if a > start), start + 0x10000)
-            return start, stop, sym
-    sys.exit(f"no symbol containing {pattern!r} in {obj}")
+            found.append((sum(c for a, c in cost.items() if start <= a < stop), start, stop, sym))
+    if not found:
+        sys.exit(f"no symbol containing {pattern!r} in {obj}")
+    return max(found)[1:]
 
 
 def main():
@@ -70,8 +75,8 @@ def main():
     ap.add_argument("symbol")
     ap.add_argument("--min", type=int, default=1000)
     args = ap.parse_args()
-    start, stop, sym = symbol_range(args.object, args.symbol)
     cost = self_costs(args.profile, args.object.rsplit("/", 1)[-1])
+    start, stop, sym = symbol_range(args.object, args.symbol, cost)
     dis = subprocess.run(["objdump", "-d", "--no-show-raw-insn", "-C", f"--start-address={start}",
                           f"--stop-address={stop}", args.object], capture_output=True, text=True).stdout
     rows = []

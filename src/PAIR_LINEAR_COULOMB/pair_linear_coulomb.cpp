@@ -4,7 +4,7 @@
 
 #include "pair_linear_coulomb.h"
 
-#include "contact/contact_sweep.h"
+#include "contact/contact_block.h"
 #include "lammps_compat.h"
 #include "lammps_input.h"
 
@@ -59,12 +59,14 @@ void PairLinearCoulomb::compute(int eflag, int vflag)
   if (uniform_coeffs < 0) uniform_coeffs = coefficients_are_uniform() ? 1 : 0;
   // one set of coefficients for every type pair (the common case) needs no type lookups,
   // and then whether pairs have friction is known before the loop
+  // and the steps without energy, virial or dissipation to count (most) skip that code
+  const bool tally = evflag || style.dissipation;
   if (!uniform_coeffs)
-    eval<MIXED>();
+    tally ? eval<MIXED, 1>() : eval<MIXED, 0>();
   else if (porewater::is_frictionless(kt_ij[1][1], mu_ij[1][1]))
-    eval<UNIFORM_FRICTIONLESS>();
+    tally ? eval<UNIFORM_FRICTIONLESS, 1>() : eval<UNIFORM_FRICTIONLESS, 0>();
   else
-    eval<UNIFORM_FRICTIONAL>();
+    tally ? eval<UNIFORM_FRICTIONAL, 1>() : eval<UNIFORM_FRICTIONAL, 0>();
   pvector[0] = dissipated;
 }
 
@@ -99,7 +101,7 @@ porewater::ContactStep PairLinearCoulomb::contact_step() const
    reproduces it bit for bit), energy and virial through Pair::ev_tally_xyz
 ------------------------------------------------------------------------- */
 
-template <int MODE> struct PairLinearCoulomb::Sweep {
+template <int MODE, int TALLY> struct PairLinearCoulomb::Sweep {
   static constexpr bool UNIFORM = MODE != MIXED;
   struct Sums {
     double lost = 0.0;
@@ -121,24 +123,43 @@ template <int MODE> struct PairLinearCoulomb::Sweep {
     double *history(int jj, double *) const { return springs + 3 * jj; }
     void keep_history(int, const double *) const {}    // updated in place
   };
+  // grain i's force and torque in registers while its contacts are applied: the same sums
+  // in the same order as adding to f[i] in place (no contact of i's row touches f[i] as j)
   struct GrainForce {
-    double *f, *torque;
-    void add(const ContactForce &c, int frictional) const
+    double *f_i, *torque_i;
+    double f[3], torque[3];
+    GrainForce(double *f_row, double *torque_row) : f_i(f_row), torque_i(torque_row)
+    {
+      for (int d = 0; d < 3; d++) {
+        f[d] = f_i[d];
+        torque[d] = torque_i[d];
+      }
+    }
+    void add(const ContactForce &c, int frictional)
     {
       f[0] += c.f[0];
       f[1] += c.f[1];
       f[2] += c.f[2];
       if (frictional) {
-        torque[0] -= c.lever_i * c.tor[0];
-        torque[1] -= c.lever_i * c.tor[1];
-        torque[2] -= c.lever_i * c.tor[2];
+        torque[0] -= c.tor_i[0];
+        torque[1] -= c.tor_i[1];
+        torque[2] -= c.tor_i[2];
       }
     }
-    void finish() const {}
+    void finish() const
+    {
+      for (int d = 0; d < 3; d++) {
+        f_i[d] = f[d];
+        torque_i[d] = torque[d];
+      }
+    }
   };
 
   PairLinearCoulomb *pair;
-  double **xs, **vs, **fs, **omegas, **torques;
+  const int *ilist;
+  // LAMMPS' per-atom 3-vectors are contiguous (row i at [3 i]): one load, not two, per value
+  const double *xs, *vs, *omegas;
+  double *fs, *torques;
   const double *radii;
   const int *types;
   const int *numneigh;
@@ -150,12 +171,18 @@ template <int MODE> struct PairLinearCoulomb::Sweep {
   double limit;
   int nlocal, newton_pair, tracking;
 
-  double x(int i, int d) const { return xs[i][d]; }
+  int grain(int ii) const { return ilist[ii]; }
+  bool uniform_coeffs(ContactCoeffs &k) const
+  {
+    k = coeffs(1, 1);
+    return UNIFORM;
+  }
+  double x(int i, int d) const { return xs[3 * static_cast<long>(i) + d]; }
   double radius(int i) const { return radii[i]; }
   int type(int i) const { return UNIFORM ? 1 : types[i]; }
   Row neighbors(int i) const { return Row{firstneigh[i], numneigh[i], firsttouch[i], firstxi[i]}; }
-  const double *v(int i, double *) const { return vs[i]; }
-  const double *omega(int i, double *) const { return omegas[i]; }
+  const double *v(int i, double *) const { return vs + 3 * static_cast<long>(i); }
+  const double *omega(int i, double *) const { return omegas + 3 * static_cast<long>(i); }
   ContactCoeffs coeffs(int itype, int jtype) const
   {
     if (UNIFORM)    // frictional known at compile time: the frictionless path has no spring
@@ -165,40 +192,48 @@ template <int MODE> struct PairLinearCoulomb::Sweep {
   porewater::ContactStep step() const { return contact; }
   bool owns(int j) const { return newton_pair || j < nlocal; }
   double share(int j) const { return porewater::pair_share(j, nlocal, newton_pair); }
-  GrainForce force_on(int i) const { return GrainForce{fs[i], torques[i]}; }
+  GrainForce force_on(int i) const
+  {
+    return GrainForce{fs + 3 * static_cast<long>(i), torques + 3 * static_cast<long>(i)};
+  }
   void add_reaction(int j, const ContactForce &c, int frictional) const
   {
-    fs[j][0] -= c.f[0];
-    fs[j][1] -= c.f[1];
-    fs[j][2] -= c.f[2];
+    double *f_j = fs + 3 * static_cast<long>(j);
+    f_j[0] -= c.f[0];
+    f_j[1] -= c.f[1];
+    f_j[2] -= c.f[2];
     if (frictional) {
-      torques[j][0] -= c.lever_j * c.tor[0];
-      torques[j][1] -= c.lever_j * c.tor[1];
-      torques[j][2] -= c.lever_j * c.tor[2];
+      double *torque_j = torques + 3 * static_cast<long>(j);
+      torque_j[0] -= c.tor_j[0];
+      torque_j[1] -= c.tor_j[1];
+      torque_j[2] -= c.tor_j[2];
     }
   }
   double overlap_limit() const { return limit; }
   void broken(int i, int j, double overlap) const { pair->broken_contact(i, j, overlap); }
-  bool tracks_dissipation() const { return tracking; }
+  bool tracks_dissipation() const { return TALLY && tracking; }
   void add_loss(Sums &sums, double energy) const { sums.lost += energy; }
   void tally(Sums &, int i, int j, const ContactForce &c, const ContactCoeffs &k,
              const double *xi, double delx, double dely, double delz) const
   {
-    if (pair->evflag)
+    if (TALLY && pair->evflag)
       pair->ev_tally_xyz(i, j, nlocal, newton_pair,
                          pair->eflag_either ? porewater::contact_energy(k.kn, k.kt, c, xi) : 0.0,
                          0.0, c.f[0], c.f[1], c.f[2], delx, dely, delz);
   }
 };
 
-template <int MODE> void PairLinearCoulomb::eval()
+template <int MODE, int TALLY> void PairLinearCoulomb::eval()
 {
-  const Sweep<MODE> sweep{this,
-                          atom->x,
-                          atom->v,
-                          atom->f,
-                          atom->omega,
-                          atom->torque,
+  // the first row of a per-atom 3-vector (none on a rank without atoms)
+  auto data = [](double **a) { return a ? a[0] : nullptr; };
+  const Sweep<MODE, TALLY> sweep{this,
+                          list->ilist,
+                          data(atom->x),
+                          data(atom->v),
+                          data(atom->omega),
+                          data(atom->f),
+                          data(atom->torque),
                           atom->radius,
                           atom->type,
                           list->numneigh,
@@ -214,10 +249,9 @@ template <int MODE> void PairLinearCoulomb::eval()
                           atom->nlocal,
                           force->newton_pair,
                           style.dissipation ? 1 : 0};
-  typename Sweep<MODE>::Sums sums;
-  const int inum = list->inum;
-  const int *ilist = list->ilist;
-  for (int ii = 0; ii < inum; ii++) porewater::linear_coulomb_sweep(sweep, ilist[ii], sums);
+  typename Sweep<MODE, TALLY>::Sums sums;
+  porewater::ContactBlock block;
+  porewater::linear_coulomb_block_sweep(sweep, 0, list->inum, sums, block);
   dissipated += sums.lost;
 }
 
@@ -401,9 +435,8 @@ double PairLinearCoulomb::single(int i, int j, int itype, int jtype, double rsq,
 
   double **x = atom->x;
   const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
-  const porewater::ContactPair pair{delx,         dely,         delz,             rsq,
-                                    radi,         radj,         atom->v[i],       atom->v[j],
-                                    atom->omega[i], atom->omega[j]};
+  const porewater::ContactPair pair = porewater::contact_pair(
+      delx, dely, delz, rsq, radi, radj, atom->v[i], atom->v[j], atom->omega[i], atom->omega[j]);
   const porewater::ContactStep setup_step{style.lever, 0, dt};
   const ContactForce c = porewater::linear_coulomb_contact(
       pair, porewater::contact_coeffs(kn_ij[itype][jtype], kt_ij[itype][jtype], mu_ij[itype][jtype]),

@@ -46,8 +46,8 @@ class PairLinearCoulomb : public PairGranHookeHistory {
 
  private:
   enum { MIXED, UNIFORM_FRICTIONAL, UNIFORM_FRICTIONLESS };    // sweep modes
-  template <int MODE> struct Sweep;    // the host side of porewater::linear_coulomb_sweep
-  template <int MODE> void eval();
+  template <int MODE, int TALLY> struct Sweep;    // the host side of porewater::linear_coulomb_block_sweep
+  template <int MODE, int TALLY> void eval();
 };
 
 }    // namespace LAMMPS_NS

@@ -10,7 +10,7 @@
 
 #include "pair_linear_coulomb_kokkos.h"
 
-#include "contact/contact_sweep.h"
+#include "contact/contact_block.h"
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
@@ -80,9 +80,14 @@ view_row(const View &v, int i)
   return view_row(v, i, std::is_same<typename View::array_layout, Kokkos::LayoutRight>());
 }
 
+// work tag: a chunk of grains through the block pass (contact_block.h), on host backends
+struct TagBlock {};
+constexpr int GRAINS_PER_CHUNK = 64;
+
 // The sweep over each grain's half list (newton off: pairs with a ghost j are computed on
-// both ranks). NEIGHFLAG HALF: one thread; HALFTHREAD: threads share j, whose forces go to
-// per-thread copies on OpenMP and atomically on GPUs.
+// both ranks): on a GPU a thread per grain (linear_coulomb_sweep), on the host a chunk of
+// grains per call (linear_coulomb_block_sweep). NEIGHFLAG HALF: one thread; HALFTHREAD:
+// threads share j, whose forces go to per-thread copies on OpenMP and atomically on GPUs.
 template <class DeviceType, int NEIGHFLAG, int EVFLAG, int UPDATE_HISTORY> struct SweepKernel {
   typedef ArrayTypes<DeviceType> AT;
   typedef PairTally value_type;    // of the parallel_reduce (EVFLAG)
@@ -116,8 +121,9 @@ template <class DeviceType, int NEIGHFLAG, int EVFLAG, int UPDATE_HISTORY> struc
   typename AT::t_virial_array vatom;
   typename Kokkos::DualView<tagint[2], DeviceType>::t_dev broken_tags;
   porewater::ContactStep contact;
+  ContactCoeffs uniform;    // the coefficients of every type pair, if is_uniform
   double limit;
-  int nlocal, tracking, eflag_global, vflag_global, eflag_atom, vflag_atom;
+  int inum, nlocal, tracking, is_uniform, eflag_global, vflag_global, eflag_atom, vflag_atom;
 
   // porewater::linear_coulomb_sweep's view of this kernel, for one grain's thread
   template <class Access> struct Policy {
@@ -162,9 +168,9 @@ template <class DeviceType, int NEIGHFLAG, int EVFLAG, int UPDATE_HISTORY> struc
         fy += c.f[1];
         fz += c.f[2];
         if (frictional) {
-          tx -= c.lever_i * c.tor[0];
-          ty -= c.lever_i * c.tor[1];
-          tz -= c.lever_i * c.tor[2];
+          tx -= c.tor_i[0];
+          ty -= c.tor_i[1];
+          tz -= c.tor_i[2];
         }
       }
       KOKKOS_INLINE_FUNCTION void finish() const
@@ -179,6 +185,12 @@ template <class DeviceType, int NEIGHFLAG, int EVFLAG, int UPDATE_HISTORY> struc
       }
     };
 
+    KOKKOS_INLINE_FUNCTION int grain(int ii) const { return k.ilist[ii]; }
+    KOKKOS_INLINE_FUNCTION bool uniform_coeffs(ContactCoeffs &c) const
+    {
+      c = k.uniform;
+      return k.is_uniform;
+    }
     KOKKOS_INLINE_FUNCTION double x(int i, int d) const { return k.x(i, d); }
     KOKKOS_INLINE_FUNCTION double radius(int i) const { return k.radius[i]; }
     KOKKOS_INLINE_FUNCTION int type(int i) const { return k.type[i]; }
@@ -214,9 +226,9 @@ template <class DeviceType, int NEIGHFLAG, int EVFLAG, int UPDATE_HISTORY> struc
       f(j, 1) -= c.f[1];
       f(j, 2) -= c.f[2];
       if (frictional) {
-        torque(j, 0) -= c.lever_j * c.tor[0];
-        torque(j, 1) -= c.lever_j * c.tor[1];
-        torque(j, 2) -= c.lever_j * c.tor[2];
+        torque(j, 0) -= c.tor_j[0];
+        torque(j, 1) -= c.tor_j[1];
+        torque(j, 2) -= c.tor_j[2];
       }
     }
     KOKKOS_INLINE_FUNCTION double overlap_limit() const { return k.limit; }
@@ -271,7 +283,47 @@ template <class DeviceType, int NEIGHFLAG, int EVFLAG, int UPDATE_HISTORY> struc
     PairTally unused;
     this->operator()(ii, unused);
   }
+
+  // host backends only (SIMD lanes, no device code): a chunk of grains
+  void operator()(TagBlock, const int chunk, PairTally &sums) const
+  {
+    const auto a_f = f.template access<Contribution>();
+    const auto a_torque = torque.template access<Contribution>();
+    const Policy<decltype(a_f)> policy{*this, a_f, a_torque};
+    porewater::ContactBlock block;
+    const int begin = chunk * GRAINS_PER_CHUNK;
+    porewater::linear_coulomb_block_sweep(policy, begin, std::min(begin + GRAINS_PER_CHUNK, inum),
+                                          sums, block);
+  }
+  void operator()(TagBlock, const int chunk) const
+  {
+    PairTally unused;
+    this->operator()(TagBlock(), chunk, unused);
+  }
 };
+
+// the kernel over every grain: a chunk a call on the host, a grain a thread on a GPU
+template <class Kernel, class DeviceType>
+void run_sweep(const Kernel &kernel, const int inum, PairTally &sums, const bool reduce,
+               std::true_type /*host*/)
+{
+  const Kokkos::RangePolicy<DeviceType, TagBlock> chunks(
+      0, (inum + GRAINS_PER_CHUNK - 1) / GRAINS_PER_CHUNK);
+  if (reduce)
+    Kokkos::parallel_reduce("pair linear/coulomb", chunks, kernel, sums);
+  else
+    Kokkos::parallel_for("pair linear/coulomb", chunks, kernel);
+}
+template <class Kernel, class DeviceType>
+void run_sweep(const Kernel &kernel, const int inum, PairTally &sums, const bool reduce,
+               std::false_type /*device*/)
+{
+  const Kokkos::RangePolicy<DeviceType> grains(0, inum);
+  if (reduce)
+    Kokkos::parallel_reduce("pair linear/coulomb", grains, kernel, sums);
+  else
+    Kokkos::parallel_for("pair linear/coulomb", grains, kernel);
+}
 
 }    // namespace
 
@@ -436,7 +488,10 @@ void PairLinearCoulombKokkos<DeviceType>::launch()
   if (vflag_atom) kernel.vatom = k_vatom.template view<DeviceType>();
   kernel.broken_tags = k_broken.template view<DeviceType>();
   kernel.contact = contact_step();
+  kernel.is_uniform = coefficients_are_uniform() ? 1 : 0;
+  kernel.uniform = porewater::contact_coeffs(kn_ij[1][1], kt_ij[1][1], mu_ij[1][1]);
   kernel.limit = style.overlap_limit;
+  kernel.inum = list->inum;
   kernel.nlocal = atom->nlocal;
   kernel.tracking = style.dissipation ? 1 : 0;
   kernel.eflag_global = eflag_global;
@@ -445,11 +500,9 @@ void PairLinearCoulombKokkos<DeviceType>::launch()
   kernel.vflag_atom = vflag_atom;
 
   PairTally sums;
-  const Kokkos::RangePolicy<DeviceType> grains(0, list->inum);
-  if (EVFLAG)
-    Kokkos::parallel_reduce("pair linear/coulomb", grains, kernel, sums);
-  else
-    Kokkos::parallel_for("pair linear/coulomb", grains, kernel);
+  run_sweep<Kernel, DeviceType>(
+      kernel, list->inum, sums, EVFLAG,
+      std::integral_constant<bool, ExecutionSpaceFromDevice<DeviceType>::space == Host>());
   typename ArrayTypes<DeviceType>::t_f_array f = atomKK->k_f.view<DeviceType>();
   typename ArrayTypes<DeviceType>::t_f_array torque = atomKK->k_torque.view<DeviceType>();
   Kokkos::Experimental::contribute(f, kernel.f);

@@ -18,4 +18,12 @@
 #define PW_FORCEINLINE inline
 #endif
 
+// PW_NOINLINE: host code called rarely from a hot loop (a buffer's flush, a contact that
+// opened), kept out of it so that the loop keeps its values in registers.
+#if defined(__GNUC__)
+#define PW_NOINLINE __attribute__((noinline))
+#else
+#define PW_NOINLINE
+#endif
+
 #endif

@@ -17,7 +17,8 @@ ContactForce linear_coulomb_contact(double r, double radi, double radj, const do
                                     const double *wi, double kn, double kt, double mu, int lever,
                                     int update_history, double dt, double *xi)
 {
-  const porewater::ContactPair pair{0.0, 0.0, r, r * r, radi, radj, vi, zero3, wi, zero3};
+  const porewater::ContactPair pair =
+      porewater::contact_pair(0.0, 0.0, r, r * r, radi, radj, vi, zero3, wi, zero3);
   return porewater::linear_coulomb_contact(pair, porewater::contact_coeffs(kn, kt, mu),
                                            porewater::ContactStep{lever, update_history, dt}, xi);
 }

@@ -1,9 +1,10 @@
-// The bookkeeping of pair linear/coulomb around its contact law, written once: one grain's
-// pass over its half neighbour list. Open contacts forget their spring, closed ones get the
-// law; the spring is kept, the broken-contact check made, the dissipation counted, and the
-// force and torque scattered to both grains (the partner only if this rank owns the pair's
-// force on it). The host loops over grains (a for loop on the CPU, a Kokkos kernel for /kk)
-// and says through its policy P where the data live and where the results go:
+// The bookkeeping of pair linear/coulomb around its contact law, written once: open pairs
+// forget their spring (open_pair), closed ones get the law, and then the spring is kept, the
+// broken-contact check made, the dissipation counted, and the force and torque scattered to
+// both grains (closed_contact). One grain's pass (linear_coulomb_sweep, the GPU's) and the
+// block pass of SIMD hosts (contact_block.h) are made of these pieces. The host loops over
+// grains (a for loop on the CPU, a Kokkos kernel for /kk) and says through its policy P where
+// the data live and where the results go:
 //
 //   P::Sums                  what the loop accumulates (at least the dissipated energy)
 //   p.x(i, d), p.radius(i), p.type(i)
@@ -27,6 +28,42 @@
 
 namespace porewater {
 
+// An open pair forgets its spring, counting the energy it held (most stay apart: no stores).
+template <class P, class Row>
+PW_FORCEINLINE void open_pair(const P &p, const Row &row, const int jj, const int itype,
+                              const int j, typename P::Sums &sums)
+{
+  if (row.touched(jj)) {    // flag 0 means history 0
+    if (p.tracks_dissipation()) {
+      double spring[3];
+      p.add_loss(sums, p.share(j) *
+                     opening_loss(p.coeffs(itype, p.type(j)).kt, row.history(jj, spring)));
+    }
+    row.forget(jj);
+  }
+}
+
+// What the force of a closed contact does once the law has given it: the broken-contact
+// check, the spring kept, the dissipation counted, the force and torque on both grains (on
+// j only if this rank owns the pair's force on it), the energy and virial tallied.
+template <class P, class Row, class GrainForce>
+PW_FORCEINLINE void closed_contact(const P &p, const Row &row, GrainForce &force_i,
+                                   typename P::Sums &sums, const int i, const int j, const int jj,
+                                   const ContactCoeffs &k, const ContactForce &c, const double *xi,
+                                   const double radi, const double radj, const double delx,
+                                   const double dely, const double delz)
+{
+  if (contact_is_broken(c.overlap, radi, radj, p.overlap_limit())) p.broken(i, j, c.overlap);
+  row.keep_history(jj, xi);
+  if (p.tracks_dissipation()) p.add_loss(sums, p.share(j) * spring_loss(k.kt, c, xi));
+  force_i.add(c, k.frictional);
+  if (p.owns(j)) p.add_reaction(j, c, k.frictional);
+  p.tally(sums, i, j, c, k, xi, delx, dely, delz);
+}
+
+// One grain's pass over its half neighbour list, each contact's law as soon as it is found:
+// the GPU's (a thread a grain); hosts with SIMD cores run a block of grains at a time
+// (contact_block.h) through the same pieces.
 template <class P>
 PW_FORCEINLINE void linear_coulomb_sweep(const P &p, const int i, typename P::Sums &sums)
 {
@@ -43,35 +80,24 @@ PW_FORCEINLINE void linear_coulomb_sweep(const P &p, const int i, typename P::Su
     const double delx = xtmp - p.x(j, 0);
     const double dely = ytmp - p.x(j, 1);
     const double delz = ztmp - p.x(j, 2);
-    const double rsq = delx * delx + dely * dely + delz * delz;
+    const double rsq = distance_squared(delx, dely, delz);
     const double radj = p.radius(j);
     const double radsum = radi + radj;
-    double spring[3];
 
-    if (rsq >= radsum * radsum) {    // an open contact forgets its history
-      if (row.touched(jj)) {    // most stay apart: no stores (flag 0 means history 0)
-        if (p.tracks_dissipation())
-          p.add_loss(sums, p.share(j) *
-                         opening_loss(p.coeffs(itype, p.type(j)).kt, row.history(jj, spring)));
-        row.forget(jj);
-      }
+    if (rsq >= radsum * radsum) {
+      open_pair(p, row, jj, itype, j, sums);
       continue;
     }
     row.touch(jj);
     const ContactCoeffs k = p.coeffs(itype, p.type(j));
     // velocities are read only for closed contacts (few of the neighbours in a granular flow)
-    double vi[3], vj[3], wi[3], wj[3];
-    const ContactPair pair{delx, dely, delz, rsq, radi, radj,
-                           p.v(i, vi), p.v(j, vj), p.omega(i, wi), p.omega(j, wj)};
+    double vi[3], vj[3], wi[3], wj[3], spring[3];
+    const ContactPair pair =
+        contact_pair(delx, dely, delz, rsq, radi, radj, p.v(i, vi), p.v(j, vj), p.omega(i, wi),
+                     p.omega(j, wj));
     double *xi = row.history(jj, spring);
     const ContactForce c = linear_coulomb_contact(pair, k, step, xi);
-    if (contact_is_broken(c.overlap, radi, radj, p.overlap_limit())) p.broken(i, j, c.overlap);
-    row.keep_history(jj, xi);
-    if (p.tracks_dissipation()) p.add_loss(sums, p.share(j) * spring_loss(k.kt, c, xi));
-
-    force_i.add(c, k.frictional);
-    if (p.owns(j)) p.add_reaction(j, c, k.frictional);
-    p.tally(sums, i, j, c, k, xi, delx, dely, delz);
+    closed_contact(p, row, force_i, sums, i, j, jj, k, c, xi, radi, radj, delx, dely, delz);
   }
   force_i.finish();
 }

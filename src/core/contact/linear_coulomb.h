@@ -22,6 +22,8 @@ struct ContactForce {
   double tor[3];    // n × f_t: torque on a grain is −ℓ·tor with its own lever arm ℓ
   double lever_i;   // ℓ_i
   double lever_j;   // ℓ_j
+  double tor_i[3];  // ℓ_i tor: the torque on i is −tor_i
+  double tor_j[3];  // ℓ_j tor: the torque on j is −tor_j
   double overlap;       // δ
   double xisq_before;   // |ξ|² after integration, before projection and cap
 };
@@ -59,23 +61,42 @@ struct ContactStep {
   double dt;
 };
 
-// Two grains i and j that overlap (rsq < (radi+radj)²): del = x_i − x_j, rsq = |del|², and
-// their velocities and angular velocities.
+// |del|² of a pair, as the overlap test and the law take it
+PW_INLINE double distance_squared(const double delx, const double dely, const double delz)
+{
+  return delx * delx + dely * dely + delz * delz;
+}
+
+// Two grains i and j that overlap (rsq < (radi+radj)²): del = x_i − x_j, rsq = |del|², their
+// relative velocity and their angular velocities, as values (a loop over a block of
+// contacts keeps them in SIMD lanes: contact_block.h).
 struct ContactPair {
   double delx, dely, delz, rsq;
   double radi, radj;
-  const double *vi, *vj, *wi, *wj;
+  double vr[3];    // v_i − v_j
+  double wi[3], wj[3];
 };
+
+PW_INLINE ContactPair contact_pair(const double delx, const double dely, const double delz,
+                                   const double rsq, const double radi, const double radj,
+                                   const double *vi, const double *vj, const double *wi,
+                                   const double *wj)
+{
+  return ContactPair{delx,          dely,          delz,          rsq,   radi,  radj,
+                     {vi[0] - vj[0], vi[1] - vj[1], vi[2] - vj[2]}, {wi[0], wi[1], wi[2]},
+                     {wj[0], wj[1], wj[2]}};
+}
 
 // The force between them; xi[3] is the tangential spring history, updated in place. A
 // frictionless pair skips the spring: f_t = 0 and tor = 0 as the full path gives, xi is
 // cleared (a spring left by an earlier pair_coeff with friction is forgotten, its energy
-// counted in xisq_before).
+// counted in xisq_before). No branch depends on the contact (the cap is a selection), so that
+// a loop over independent contacts runs in SIMD lanes.
 PW_INLINE ContactForce linear_coulomb_contact(const ContactPair &p, const ContactCoeffs &k,
                                               const ContactStep &step, double *xi)
 {
   const double delx = p.delx, dely = p.dely, delz = p.delz, rsq = p.rsq;
-  const double *vi = p.vi, *vj = p.vj, *wi = p.wi, *wj = p.wj;
+  const double *wi = p.wi, *wj = p.wj;
   const double kn = k.kn, kt = k.kt, mu = k.mu, dt = step.dt;
   const int update_history = step.update_history;
   ContactForce c;
@@ -95,7 +116,7 @@ PW_INLINE ContactForce linear_coulomb_contact(const ContactPair &p, const Contac
   if (!k.frictional) {
     c.xisq_before = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
     xi[0] = xi[1] = xi[2] = 0.0;
-    for (int d = 0; d < 3; d++) c.ft[d] = c.tor[d] = 0.0;
+    for (int d = 0; d < 3; d++) c.ft[d] = c.tor[d] = c.tor_i[d] = c.tor_j[d] = 0.0;
     c.f[0] = delx * ccel;
     c.f[1] = dely * ccel;
     c.f[2] = delz * ccel;
@@ -103,9 +124,9 @@ PW_INLINE ContactForce linear_coulomb_contact(const ContactPair &p, const Contac
   }
 
   // relative velocity and its part tangential to n = del/r
-  const double vr1 = vi[0] - vj[0];
-  const double vr2 = vi[1] - vj[1];
-  const double vr3 = vi[2] - vj[2];
+  const double vr1 = p.vr[0];
+  const double vr2 = p.vr[1];
+  const double vr3 = p.vr[2];
   const double vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
   const double vt1 = vr1 - delx * vnnr * rsqinv;
   const double vt2 = vr2 - dely * vnnr * rsqinv;
@@ -126,7 +147,6 @@ PW_INLINE ContactForce linear_coulomb_contact(const ContactPair &p, const Contac
     xi[2] += vtr3 * dt;
   }
   const double xisq_before = xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2];
-  const double ximag = sqrt(xisq_before);
   const double rsht = (xi[0] * delx + xi[1] * dely + xi[2] * delz) * rsqinv;
   if (update_history) {
     xi[0] -= rsht * delx;
@@ -134,25 +154,26 @@ PW_INLINE ContactForce linear_coulomb_contact(const ContactPair &p, const Contac
     xi[2] -= rsht * delz;
   }
 
-  // Coulomb cap: a spring beyond μ|f_n| is reset to the limit
+  // Coulomb cap: a spring beyond μ|f_n| is reset to the limit (one without length, |ξ| = 0
+  // before the projection, exerts none); selections, not branches: the same values
   double fs1 = -(kt * xi[0]);
   double fs2 = -(kt * xi[1]);
   double fs3 = -(kt * xi[2]);
   const double fs = sqrt(fs1 * fs1 + fs2 * fs2 + fs3 * fs3);
   const double fn = mu * fabs(ccel * r);
-  if (fs > fn) {
-    if (ximag != 0.0) {
-      const double scale = fn / fs;
-      xi[0] = scale * xi[0];
-      xi[1] = scale * xi[1];
-      xi[2] = scale * xi[2];
-      fs1 *= scale;
-      fs2 *= scale;
-      fs3 *= scale;
-    } else {
-      fs1 = fs2 = fs3 = 0.0;
-    }
-  }
+  const bool capped = fs > fn;
+  const bool has_length = xisq_before != 0.0;    // |ξ| != 0, without its square root
+  const bool rescale = capped & has_length;    // & rather than &&: no branch
+  // every candidate computed, then chosen: used only where capped
+  const double scale = fn / fs;
+  const double xi_capped[3] = {scale * xi[0], scale * xi[1], scale * xi[2]};
+  const double fs_capped[3] = {fs1 * scale, fs2 * scale, fs3 * scale};
+  xi[0] = rescale ? xi_capped[0] : xi[0];
+  xi[1] = rescale ? xi_capped[1] : xi[1];
+  xi[2] = rescale ? xi_capped[2] : xi[2];
+  fs1 = rescale ? fs_capped[0] : (capped ? 0.0 : fs1);
+  fs2 = rescale ? fs_capped[1] : (capped ? 0.0 : fs2);
+  fs3 = rescale ? fs_capped[2] : (capped ? 0.0 : fs3);
 
   c.ft[0] = fs1;
   c.ft[1] = fs2;
@@ -163,6 +184,10 @@ PW_INLINE ContactForce linear_coulomb_contact(const ContactPair &p, const Contac
   c.tor[0] = rinv * (dely * fs3 - delz * fs2);
   c.tor[1] = rinv * (delz * fs1 - delx * fs3);
   c.tor[2] = rinv * (delx * fs2 - dely * fs1);
+  for (int d = 0; d < 3; d++) {
+    c.tor_i[d] = c.lever_i * c.tor[d];
+    c.tor_j[d] = c.lever_j * c.tor[d];
+  }
   c.xisq_before = xisq_before;
   return c;
 }

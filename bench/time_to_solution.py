@@ -1,0 +1,270 @@
+#!/usr/bin/python3
+"""Time to solution of examples/tidal_shear: the chaotic spread of the outputs the paper
+reports, each numerical knob's error against that spread, and what each costs.
+
+Part "ensemble": the default run and ENSEMBLE - 1 copies that differ only by one grain moved
+  by 1e-12 m at the start (in.tidal_shear -var perturb, perturb_id), CYCLES cycles each.
+  Per run, the metrics (METRICS) averaged over cycles 2-4 (cycle 1 starts from the unsheared
+  bed), and the creep exponent n pooled over the windows of cycles 2-4. The band of a metric:
+  the 95 % prediction interval of one more run of the ensemble, mean +- t(0.975, N-1) s
+  sqrt(1 + 1/N) over its N members: a run that differs from the default by round-off alone
+  falls outside it once in 20.
+Part "knobs": each knob of KNOBS alone, CYCLES cycles: its metrics against the band.
+Part "layout": the default on the 2 cores as 2 MPI ranks, and as 1 rank x 2 OpenMP threads
+  with /kk (each alone on the machine: wall time).
+Part "fast": the preset -var fast 1 (in.params), likewise.
+Part "report" (no runs): the tables (bench/time_to_solution_results.md) and the figure
+  (bench/time_to_solution.png) from the runs in --work.
+
+Costs: the CPU seconds of each 1-rank run (two run side by side, one per core, so CPU time
+is the wall time a run takes on a core of its own), the wall seconds of the runs on both
+cores; every run records the load average before and after (cost.txt).
+
+Usage (after scripts/setup.sh; source scripts/env.sh):
+    /usr/bin/python3 bench/time_to_solution.py --part ensemble|knobs|layout|fast|report [--work DIR]
+        [--jobs N] [--only NAME,...]
+Runs complete in --work are not repeated.
+"""
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+from concurrent.futures import ThreadPoolExecutor
+
+import numpy as np
+from scipy import stats
+
+import fidelity
+import fidelity_factors
+from example_runs import complete, load, prepare, read_cost, timed_run
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CYCLES, PERIOD = 4, 2.5                 # in.params (reduced case): f = 0.4 Hz
+KEEP = (2, 3, 4)                        # cycle 1 starts from the unsheared bed
+ENSEMBLE, PERTURB = 6, 1.0e-12          # members; m, grain perturb_id moved in x
+CELL_Z = 0.08176                        # in.params, the default bed's fluid cells
+# the default's fluid grid is 3 x 2 x 4 cells of 0.087 x 0.065 x 0.082 m (4.3 x 3.3 x 4.1
+# diameters, the original's ~4.4); the other two keep the active layers' top face where it is
+# (3 x 0.08176 = 6 x 0.04088 = 2 x 0.12264 m, just under the plate)
+GRID_FINE = {"grid_x": 6, "grid_y": 4, "grid_z": 7, "cell_z": CELL_Z / 2}
+GRID_COARSE = {"grid_x": 2, "grid_y": 1, "grid_z": 3, "cell_z": CELL_Z * 1.5}
+
+# name: (label, family, in.tidal_shear -var overrides, ranks, lmp arguments, OpenMP threads)
+KNOBS = {
+    "eps0.035": ("eps 0.035", "time step", {"eps": 0.035}, 1, (), 1),
+    "eps0.1": ("eps 0.1", "time step", {"eps": 0.1}, 1, (), 1),
+    "eps0.14": ("eps 0.14", "time step", {"eps": 0.14}, 1, (), 1),
+    "eps0.2": ("eps 0.2", "time step", {"eps": 0.2}, 1, (), 1),
+    "every1": ("fluid every 1", "fluid interval", {"fluid_every": 1}, 1, (), 1),
+    "every50": ("fluid every 50", "fluid interval", {"fluid_every": 50}, 1, (), 1),
+    "every200": ("fluid every 200", "fluid interval", {"fluid_every": 200}, 1, (), 1),
+    "grid_fine": ("fluid cells half the size (6x4x7)", "fluid grid", GRID_FINE, 1, (), 1),
+    "grid_coarse": ("fluid cells 1.5-2x (2x1x3)", "fluid grid", GRID_COARSE, 1, (), 1),
+    "skin0.2": ("skin 0.2 r", "neighbours", {"skin": 0.2}, 1, (), 1),
+    "skin0.8": ("skin 0.8 r", "neighbours", {"skin": 0.8}, 1, (), 1),
+    "check10": ("skin 0.8 r, checked every 10", "neighbours", {"skin": 0.8, "neigh_every": 10},
+                1, (), 1),
+    "ty3": ("nve/sphere/ty3", "integrator", {"integrator": "nve/sphere/ty3"}, 1, (), 1),
+}
+LAYOUTS = {
+    "np2": ("2 MPI ranks", "layout", {}, 2, (), 1),
+    "kk2": ("1 rank x 2 threads, /kk", "layout", {}, 1, ("-k", "on", "t", "2", "-sf", "kk"), 2),
+}
+FAST = {"fast": ("-var fast 1", "preset", {"fast": 1}, 2, (), 1)}
+
+# key of fidelity_factors.factor_metrics (per cycle), label, scale, format
+METRICS = [
+    ("slip", "slip (mm)", 1e3, "%.0f"),
+    ("onset", "onset (phase)", 1.0, "%.3f"),
+    ("end", "end (phase)", 1.0, "%.3f"),
+    ("peak", "peak velocity (m/s)", 1.0, "%.3f"),
+    ("dilation", "dilation (mm)", 1e3, "%.1f"),
+    ("z_min", "min coordination", 1.0, "%.2f"),
+    ("suction", "suction in slip (A)", 1.0, "%.3f"),
+    ("v_creep", "creep velocity 0.2-0.6 (um/s)", 1e6, "%.1f"),
+    ("n", "creep exponent n, cycles 2-4", 1.0, "%.2f"),
+]
+
+
+def members():
+    """name: -var overrides of the ensemble's runs"""
+    runs = {"member0": {}}
+    for k in range(1, ENSEMBLE):
+        runs["member%d" % k] = {"perturb": PERTURB, "perturb_id": k}
+    return runs
+
+
+def run_one(work, name, variables, ranks=1, args=(), threads=1):
+    d = os.path.join(work, name)
+    if complete(os.path.join(d, "timeseries.txt"), CYCLES * PERIOD):
+        return name, None
+    prepare(d)
+    return name, timed_run(d, "in.tidal_shear", dict(variables, cycles=CYCLES), ranks=ranks,
+                           args=args, threads=threads)
+
+
+def metrics(work, name):
+    """{metric: value averaged over KEEP}, or None if the run is not complete"""
+    path = os.path.join(work, name, "timeseries.txt")
+    if not complete(path, CYCLES * PERIOD):
+        return None
+    c = load(path)
+    per_cycle = fidelity_factors.factor_metrics(c, CYCLES)
+    cycles = fidelity.cycle_metrics(c, True, PERIOD, CYCLES, stuck_until=0.2)
+    out = {}
+    for key, _, _, _ in METRICS:
+        if key == "n":
+            pts = fidelity.creep_points(c, cycles=CYCLES)
+            fit = fidelity.power_law(pts[np.isin(pts[:, 2], KEEP)])
+            if fit:
+                out["n"] = fit[0]
+            continue
+        source = cycles if key == "v_creep" else [per_cycle[k] for k in sorted(per_cycle)]
+        vals = [r[key] for r in source if r["cycle"] in KEEP and key in r]
+        if len(vals) == len(KEEP):    # a cycle without a slip has no slip metrics
+            out[key] = float(np.mean(vals))
+    return out
+
+
+def band(values):
+    """mean and the 95 % prediction interval's half-width of one more member"""
+    v = np.asarray(values, dtype=float)
+    n = len(v)
+    return v.mean(), stats.t.ppf(0.975, n - 1) * v.std(ddof=1) * np.sqrt(1 + 1.0 / n)
+
+
+def cost_of(work, name):
+    """(seconds, 'CPU' or 'wall', load before, after): CPU time of a 1-rank run, wall time of
+    a run on both cores"""
+    c = read_cost(os.path.join(work, name))
+    if not c:
+        return None
+    spec = {**KNOBS, **LAYOUTS, **FAST}.get(name)
+    both = spec and (spec[3] > 1 or spec[5] > 1)
+    loads = (c[2], c[3]) if len(c) > 3 else (float("nan"), float("nan"))
+    return (c[1], "wall") + loads if both else (c[0], "CPU") + loads
+
+
+def report(work):
+    ens = {n: metrics(work, n) for n in members()}
+    ens = {n: m for n, m in ens.items() if m}
+    if len(ens) < 3:
+        sys.exit("the ensemble needs at least 3 complete runs in %s" % work)
+    bands = {}
+    for key, _, _, _ in METRICS:
+        vals = [m[key] for m in ens.values() if key in m]
+        if len(vals) >= 3:
+            bands[key] = band(vals) + (min(vals), max(vals), len(vals))
+    commit = subprocess.run(["git", "-C", HERE, "rev-parse", "--short", "HEAD"],
+                            capture_output=True, text=True).stdout.strip()
+    lines = ["# Time to solution: bench/time_to_solution.py", "",
+             "Tables written at commit %s from the runs in `%s` (examples/tidal_shear, %d cycles "
+             "each; metrics averaged over cycles %s, n pooled over their creep windows)." % (
+                 commit, work, CYCLES, "-".join(map(str, (KEEP[0], KEEP[-1])))), "",
+             "## The ensemble (%d runs: the default and one grain moved by %g m)" % (len(ens), PERTURB),
+             "", "| metric | " + " | ".join(ens) + " | mean | band (95 % prediction) | range |",
+             "|---|" + "---|" * (len(ens) + 3)]
+    for key, label, scale, f in METRICS:
+        if key not in bands:
+            continue
+        m, h, lo, hi, _ = bands[key]
+        lines.append("| %s | %s | %s | ± %s | %s to %s |" % (
+            label, " | ".join((f % (scale * e[key])) if key in e else "none" for e in ens.values()),
+            f % (scale * m), f % (scale * h), f % (scale * lo), f % (scale * hi)))
+    costs = [cost_of(work, n) for n in ens]
+    costs = [c for c in costs if c]
+    if costs:
+        lines += ["", "Cost of a member (%d cycles, 1 rank): %.0f-%.0f CPU s (load before/after "
+                  "%s)." % (CYCLES, min(c[0] for c in costs), max(c[0] for c in costs),
+                            ", ".join("%.1f/%.1f" % c[2:] for c in costs))]
+    lines += ["", "## Each knob against the band", "",
+              "Error: (value - ensemble mean) / band half-width; |error| <= 1 is inside the band.", "",
+              "| knob | cost (s) | " + " | ".join(l for _, l, _, _ in METRICS) + " | inside |",
+              "|---|---|" + "---|" * (len(METRICS) + 1)]
+    rows = {}
+    for name, spec in {**KNOBS, **LAYOUTS, **FAST}.items():
+        m = metrics(work, name)
+        if not m:
+            continue
+        cost = cost_of(work, name)
+        errs = {k: (m[k] - bands[k][0]) / bands[k][1] for k in bands if k in m}
+        inside = all(abs(e) <= 1 for e in errs.values()) and set(errs) == set(bands)
+        rows[name] = (spec, m, cost, errs, inside)
+        cells = []
+        for key, _, scale, f in METRICS:
+            cells.append("%s (%+.1f)" % (f % (scale * m[key]), errs[key]) if key in errs else "none")
+        lines.append("| %s | %s | %s | %s |" % (
+            spec[0], "%.0f %s" % cost[:2] if cost else "", " | ".join(cells), "yes" if inside else "no"))
+    plot(ens, bands, rows, work, os.path.join(HERE, "time_to_solution.png"))
+    lines += ["", "![cost against each metric, the band shaded](time_to_solution.png)"]
+    open(os.path.join(HERE, "time_to_solution_results.md"), "w").write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+def plot(ens, bands, rows, work, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(3, 3, figsize=(13, 10))
+    ens_costs = [cost_of(work, n) for n in ens]
+    families = sorted({r[0][1] for r in rows.values()})
+    colours = {f: "C%d" % k for k, f in enumerate(families)}
+    for ax, (key, label, scale, _) in zip(axes.flat, METRICS):
+        if key not in bands:
+            ax.set_visible(False)
+            continue
+        m, h = bands[key][:2]
+        ax.axhspan(scale * (m - h), scale * (m + h), color="0.88", label="band (95 %)")
+        for name, c in zip(ens, ens_costs):
+            if c and key in ens[name]:
+                ax.plot(c[0], scale * ens[name][key], "o", color="0.4", ms=4)
+        for name, (spec, mm, cost, errs, inside) in rows.items():
+            if cost and key in mm:
+                ax.plot(cost[0], scale * mm[key], "s" if inside else "x", color=colours[spec[1]], ms=6)
+                ax.annotate(name, (cost[0], scale * mm[key]), fontsize=6)
+        ax.set_xscale("log")
+        ax.set_title(label, fontsize=9)
+        ax.set_xlabel("cost of %d cycles (s)" % CYCLES, fontsize=8)
+    handles = [plt.Line2D([], [], marker="s", ls="", color=colours[f], label=f) for f in families]
+    handles += [plt.Line2D([], [], marker="o", ls="", color="0.4", label="ensemble")]
+    axes.flat[0].legend(handles=handles, fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=80)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--part", required=True, choices=["ensemble", "knobs", "layout", "fast", "report"])
+    ap.add_argument("--work", default="/tmp/pw_time_to_solution")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--only", default="", help="comma-separated run names of the part")
+    args = ap.parse_args()
+    if args.part == "report":
+        return report(args.work)
+    # the runs load a copy of the plugin taken now: a rebuild meanwhile does not touch them
+    frozen = os.path.join(args.work, "plugin_" + args.part)
+    os.makedirs(frozen, exist_ok=True)
+    for path in os.environ.get("LD_LIBRARY_PATH", "").split(":"):
+        if os.path.exists(os.path.join(path, "porewater.so")):
+            for so in ("porewater.so", "porewater_styles.so"):
+                shutil.copy(os.path.join(path, so), frozen)
+            break
+    else:
+        sys.exit("no porewater.so on LD_LIBRARY_PATH: source scripts/env.sh first")
+    os.environ["LD_LIBRARY_PATH"] = frozen + ":" + os.environ["LD_LIBRARY_PATH"]
+    specs = {"ensemble": {n: ("", "", v, 1, (), 1) for n, v in members().items()},
+             "knobs": KNOBS, "layout": LAYOUTS, "fast": FAST}[args.part]
+    if args.only:
+        specs = {n: s for n, s in specs.items() if n in args.only.split(",")}
+    # runs on both cores one at a time; 1-rank runs --jobs at a time
+    jobs = 1 if args.part in ("layout", "fast") else args.jobs
+    pool = ThreadPoolExecutor(jobs)
+    todo = [(n, s) for n, s in specs.items()]
+    for name, cpu in pool.map(lambda ns: run_one(args.work, ns[0], ns[1][2], ns[1][3], ns[1][4],
+                                                 ns[1][5]), todo):
+        print("%s: %s" % (name, "done before" if cpu is None else "%.0f s CPU" % cpu), flush=True)
+
+
+if __name__ == "__main__":
+    main()
