@@ -10,36 +10,44 @@ and its scaling").
 H (top of the highest grain over the floor) and phi (1 - grain volume/(L_x L_y H)) of the
 reduced cases come from their consolidated states; Table S1's are the supplement's 0.47 m at
 phi 0.38. The groups of the plate mode use the bed's vertical stiffness under the plate,
-K_v = m_w (2 pi f_p)^2, with the plate-mode frequency f_p measured by
-bench/wall_damping.py on the shipped state (110 Hz); for the other cases K_v is scaled with
-k_n (a packing of linear springs has its moduli proportional to k_n/d at a given geometry)
-and with L_x L_y/H.
+K_v = m_w (2 pi f_p)^2, with the plate-mode frequency f_p measured by bench/wall_damping.py
+(its ringdown) on each reduced bed: 110 Hz on the frictionless one, 93.3 Hz on the default
+(the original's preparation, looser); as a constrained modulus M_s = K_v H/(L_x L_y) over
+k_n/d, 0.79 and 0.567. Table S1's bed, prepared as the original's, takes the default's
+(a packing of linear springs has its moduli proportional to k_n/d at a given geometry).
 """
 import math
 import sys
 
 COMMON = dict(r=0.01, rho=2600.0, rho_f=1000.0, g=9.81, sigma0=80e3, amp=70e3, tau=10e3,
               kc=3.5e-13, eps=0.07)
-# constrained modulus of the bed measured on the shipped reduced state, over k_n/d
-MODULUS_OVER_KN_D = 0.79
+# constrained modulus of the bed over k_n/d, from the plate mode measured on each reduced bed
+MODULUS_FRICTIONLESS, MODULUS_ORIGINAL = 0.79, 0.567
 CASES = {
     "Table S1": dict(COMMON, lx=0.52, ly=0.26, kn=1.16e9, beta=1.426e-8, mu_f=1.040e-7,
                      f=0.2, dz=0.55 / 6, H=0.47, phi=0.38, mass_factor=1.0, gamma_w=1e3,
-                     gamma_p=0.0),
-    # the bed shipped before (consolidated_0.data until the faithful reduced case)
+                     gamma_p=0.0, modulus=MODULUS_ORIGINAL),
+    # the case before the faithful reduced one (1 Hz, beta_f x100)
     "reduced before": dict(COMMON, lx=0.26, ly=0.13, kn=1.16e7, beta=1.426e-6, mu_f=8.3e-10,
                            f=1.0, dz=0.317 / 4, H=0.2567, phi=0.4206, mass_factor=1.0,
-                           gamma_w=1e3, gamma_p=0.0),
-    # in.params (default): the shipped consolidated_0.data
-    "reduced": dict(COMMON, lx=0.26, ly=0.13, kn=1.16e7, beta=1.426e-8, mu_f=1.93e-7,
-                    f=0.4, dz=(0.2383 + 0.06) / 4, H=0.2383, phi=0.3759, mass_factor=0.493,
-                    gamma_w=100.0, gamma_p=0.0),
+                           gamma_w=1e3, gamma_p=0.0, modulus=MODULUS_FRICTIONLESS),
+    # in.params -var bed frictionless: consolidated_frictionless_0.data
+    "reduced, frictionless bed": dict(COMMON, lx=0.26, ly=0.13, kn=1.16e7, beta=1.426e-8,
+                                      mu_f=1.93e-7, f=0.4, dz=0.078, H=0.2383, phi=0.3759,
+                                      mass_factor=0.493, gamma_w=100.0, gamma_p=0.0,
+                                      modulus=MODULUS_FRICTIONLESS),
+    # in.params (default): consolidated_0.data, the original's preparation
+    "reduced": dict(COMMON, lx=0.26, ly=0.13, kn=1.16e7, beta=1.426e-8, mu_f=2.415e-7,
+                    f=0.4, dz=0.08176, H=0.2498, phi=0.4049, mass_factor=0.4703,
+                    gamma_w=100.0, gamma_p=0.0, modulus=MODULUS_ORIGINAL),
 }
 
 
-# the shipped bed (consolidated_0.data) and the in.params values chosen for it
-SHIPPED = dict(H=CASES["reduced"]["H"], phi=CASES["reduced"]["phi"], cell_z=0.078,
-               mu_f=CASES["reduced"]["mu_f"], mass_factor=CASES["reduced"]["mass_factor"])
+# the bed the reduced case's parameters were first chosen for (the frictionless one) and
+# those values: bed_parameters keeps its groups for any other bed
+FRICTIONLESS = CASES["reduced, frictionless bed"]
+SHIPPED = dict(H=FRICTIONLESS["H"], phi=FRICTIONLESS["phi"], cell_z=0.078,
+               mu_f=FRICTIONLESS["mu_f"], mass_factor=FRICTIONLESS["mass_factor"])
 
 
 def bed_geometry(path):
@@ -86,7 +94,7 @@ def groups(c):
     smax = c["sigma0"] + c["amp"]
     Z = 4.5                                              # coordination of the loaded bed
     F_mean = math.pi * d * d * smax / (Z * (1 - phi))    # mean contact force at sigma_max
-    M_s = MODULUS_OVER_KN_D * c["kn"] / d
+    M_s = c["modulus"] * c["kn"] / d
     K_v = M_s * area / H
     root = math.sqrt(K_v * mass_w)
     t_d = H * H / D
@@ -100,7 +108,7 @@ def groups(c):
     g["mu_f H^2/(k T sigma0)"] = c["mu_f"] * H ** 2 / (k * T * c["sigma0"])
     g["1/(beta_f phi sigma0)"] = 1.0 / (c["beta"] * phi * c["sigma0"])
     g["beta_f k_n/d"] = c["beta"] * c["kn"] / d
-    g["beta_f phi M_s (M_s = 0.79 k_n/d)"] = c["beta"] * phi * M_s
+    g["beta_f phi M_s (M_s: the bed's constrained modulus)"] = c["beta"] * phi * M_s
     g["t_i/T = d sqrt(rho/sigma0)/T"] = d * math.sqrt(c["rho"] / c["sigma0"]) / T
     g["Pi_w = m_w H/(A L_x L_y T^2)"] = mass_w * H / (c["amp"] * area * T * T)
     g["tau/sigma0"] = c["tau"] / c["sigma0"]

@@ -141,30 +141,22 @@ inline void linear_coulomb_block_sweep(const P &p, const int begin, const int en
   int n = 0;
   for (int ii = begin; ii < end; ii++) {
     const int i = p.grain(ii);
-    const double xtmp = p.x(i, 0), ytmp = p.x(i, 1), ztmp = p.x(i, 2);
-    const double radi = p.radius(i);
-    const int itype = p.type(i);
+    const SweptGrain gi = swept_grain(p, i);
     const auto row = p.neighbors(i);
     const int jnum = row.count();
     for (int jj = 0; jj < jnum; jj++) {
-      const int j = row.neighbor(jj);
-      const double delx = xtmp - p.x(j, 0);
-      const double dely = ytmp - p.x(j, 1);
-      const double delz = ztmp - p.x(j, 2);
-      const double rsq = distance_squared(delx, dely, delz);
-      const double radj = p.radius(j);
-      const double radsum = radi + radj;
-      const int closed = rsq < radsum * radsum;
+      const NeighbourPair pr = neighbour_pair(p, gi, row, jj);
+      const int closed = pr.closed;
       b.i[n] = i;
-      b.j[n] = j;
+      b.j[n] = pr.j;
       b.jj[n] = jj;
-      b.delx[n] = delx;
-      b.dely[n] = dely;
-      b.delz[n] = delz;
-      b.radj[n] = radj;
+      b.delx[n] = pr.delx;
+      b.dely[n] = pr.dely;
+      b.delz[n] = pr.delz;
+      b.radj[n] = pr.radj;
       n += closed;
       // a pair that opened since the last step: rare, so a predictable branch
-      if (row.touched(jj) & !closed) detail::forget_opened(p, row, jj, itype, j, sums);
+      if (row.touched(jj) & !closed) detail::forget_opened(p, row, jj, gi.type, pr.j, sums);
       if (n == ContactBlock::capacity) {
         detail::flush_contacts(p, b, n, uniform, k, step, sums);
         n = 0;

@@ -61,30 +61,57 @@ PW_FORCEINLINE void closed_contact(const P &p, const Row &row, GrainForce &force
   p.tally(sums, i, j, c, k, xi, delx, dely, delz);
 }
 
+// Grain i as a pass over its neighbours sees it
+struct SweptGrain {
+  double x, y, z, rad;
+  int type;
+};
+template <class P> PW_FORCEINLINE SweptGrain swept_grain(const P &p, const int i)
+{
+  return SweptGrain{p.x(i, 0), p.x(i, 1), p.x(i, 2), p.radius(i), p.type(i)};
+}
+
+// Its pair with neighbour jj: del = x_i − x_j, |del|², j's radius, and whether they overlap
+// (a distance that is not finite counts as an overlap: the law then reports the contact as
+// broken, which stops a run that has blown up)
+struct NeighbourPair {
+  int j;
+  double delx, dely, delz, rsq, radj;
+  bool closed;
+};
+template <class P, class Row>
+PW_FORCEINLINE NeighbourPair neighbour_pair(const P &p, const SweptGrain &g, const Row &row,
+                                            const int jj)
+{
+  const int j = row.neighbor(jj);
+  const double delx = g.x - p.x(j, 0);
+  const double dely = g.y - p.x(j, 1);
+  const double delz = g.z - p.x(j, 2);
+  const double rsq = distance_squared(delx, dely, delz);
+  const double radj = p.radius(j);
+  const double radsum = g.rad + radj;
+  return NeighbourPair{j, delx, dely, delz, rsq, radj, !(rsq >= radsum * radsum)};
+}
+
 // One grain's pass over its half neighbour list, each contact's law as soon as it is found:
 // the GPU's (a thread a grain); hosts with SIMD cores run a block of grains at a time
 // (contact_block.h) through the same pieces.
 template <class P>
 PW_FORCEINLINE void linear_coulomb_sweep(const P &p, const int i, typename P::Sums &sums)
 {
-  const double xtmp = p.x(i, 0), ytmp = p.x(i, 1), ztmp = p.x(i, 2);
-  const double radi = p.radius(i);
-  const int itype = p.type(i);
+  const SweptGrain gi = swept_grain(p, i);
+  const double radi = gi.rad;
+  const int itype = gi.type;
   const auto row = p.neighbors(i);
   auto force_i = p.force_on(i);
   const ContactStep step = p.step();
   const int jnum = row.count();
 
   for (int jj = 0; jj < jnum; jj++) {
-    const int j = row.neighbor(jj);
-    const double delx = xtmp - p.x(j, 0);
-    const double dely = ytmp - p.x(j, 1);
-    const double delz = ztmp - p.x(j, 2);
-    const double rsq = distance_squared(delx, dely, delz);
-    const double radj = p.radius(j);
-    const double radsum = radi + radj;
-
-    if (rsq >= radsum * radsum) {
+    const NeighbourPair pr = neighbour_pair(p, gi, row, jj);
+    const int j = pr.j;
+    const double delx = pr.delx, dely = pr.dely, delz = pr.delz, rsq = pr.rsq, radj = pr.radj;
+    if (!pr.closed) {
       open_pair(p, row, jj, itype, j, sums);
       continue;
     }
