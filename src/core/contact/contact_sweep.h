@@ -72,8 +72,6 @@ template <class P> PW_FORCEINLINE SweptGrain swept_grain(const P &p, const int i
 }
 
 // Its pair with neighbour jj: del = x_i − x_j, |del|², j's radius, and whether they overlap
-// (a distance that is not finite counts as an overlap: the law then reports the contact as
-// broken, which stops a run that has blown up)
 struct NeighbourPair {
   int j;
   double delx, dely, delz, rsq, radj;
@@ -89,8 +87,7 @@ PW_FORCEINLINE NeighbourPair neighbour_pair(const P &p, const SweptGrain &g, con
   const double delz = g.z - p.x(j, 2);
   const double rsq = distance_squared(delx, dely, delz);
   const double radj = p.radius(j);
-  const double radsum = g.rad + radj;
-  return NeighbourPair{j, delx, dely, delz, rsq, radj, !(rsq >= radsum * radsum)};
+  return NeighbourPair{j, delx, dely, delz, rsq, radj, pair_overlaps(rsq, g.rad + radj)};
 }
 
 // One grain's pass over its half neighbour list, each contact's law as soon as it is found:

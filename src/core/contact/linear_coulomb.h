@@ -67,6 +67,14 @@ PW_INLINE double distance_squared(const double delx, const double dely, const do
   return delx * delx + dely * dely + delz * delz;
 }
 
+// Whether two grains at |del|² = rsq with radii summing to radsum overlap; a distance that is
+// not finite counts as an overlap (the law then reports the contact as broken, which stops a
+// run that has blown up)
+PW_INLINE bool pair_overlaps(const double rsq, const double radsum)
+{
+  return !(rsq >= radsum * radsum);
+}
+
 // Two grains i and j that overlap (rsq < (radi+radj)²): del = x_i − x_j, rsq = |del|², their
 // relative velocity and their angular velocities, as values (a loop over a block of
 // contacts keeps them in SIMD lanes: contact_block.h).
