@@ -9,12 +9,11 @@ the wall-clock budget of the run is spent (LAMMPS' timer timeout); the preparati
 is reported apart.
 """
 import os
-import shutil
 import subprocess
 
 import numpy as np
 
-from example_runs import EXAMPLE, FRICTIONLESS, HERE, load, loop_time, prepare, run_lmp, time_step, timed_run
+from example_runs import FRICTIONLESS, HERE, load, loop_time, prepare, run_lmp, time_step, timed_run
 
 SOFT_KN = 1.16e7
 SETTLE_TIME = 0.6                   # s: in.pack at most (its halt on the kinetic energy waits
@@ -24,24 +23,24 @@ PROJECTED_US_PER_STEP = 430.0       # bench/RESULTS.md: the Table S1-sized scene
 DT = time_step(1.16e9)              # Table S1's k_n
 
 
-def prepare_full(work):
-    d = os.path.join(work, "full")
-    os.makedirs(d, exist_ok=True)
-    for name in ["in.params", "in.tidal_shear", "in.checkpoint_params", "in.continue", "in.pack",
-                 "in.consolidate"]:
-        shutil.copy(os.path.join(EXAMPLE, name), d)
-    shutil.copy(os.path.join(HERE, "in.tidal_shear_timed"), d)
+def prepare_full(work, bed="frictionless", folder="full"):
+    """the Table S1-sized bed (in.params -var bed BED: its preparation) in work/folder: in.pack
+    and in.consolidate at the reduced case's k_n, then in.consolidate at Table S1's"""
+    d = os.path.join(work, folder)
+    prepare(d, ["in.tidal_shear_timed"])
+    names = "_1.data" if bed == "original" else "_%s_1.data" % bed
+    packed, final = "packed" + names, "consolidated" + names
+    variables = {"bed": bed, "full": 1}
     steps = []
-    if not os.path.exists(os.path.join(d, "packed_frictionless_1.data")):
-        steps.append(("in.pack", {**FRICTIONLESS, "full": 1, "kn": SOFT_KN, "settle_time": SETTLE_TIME}, 2,
-                      "log.pack"))
+    if not os.path.exists(os.path.join(d, packed)):
+        steps.append(("in.pack", dict(variables, kn=SOFT_KN, settle_time=SETTLE_TIME), 2, "log.pack"))
     if not os.path.exists(os.path.join(d, "consolidated_soft.data")):
-        steps.append(("in.consolidate", {**FRICTIONLESS, "full": 1, "kn": SOFT_KN,
-                                         "output": "consolidated_soft.data"}, 2, "log.consolidate_soft"))
-    if not os.path.exists(os.path.join(d, "consolidated_frictionless_1.data")):
+        steps.append(("in.consolidate", dict(variables, kn=SOFT_KN, output="consolidated_soft.data"),
+                      2, "log.consolidate_soft"))
+    if not os.path.exists(os.path.join(d, final)):
         # at Table S1's k_n the plate and the grains settle in milliseconds (checked in the log)
-        steps.append(("in.consolidate", {**FRICTIONLESS, "full": 1, "input": "consolidated_soft.data",
-                                         "settle_time": 0.05}, 2, "log.consolidate"))
+        steps.append(("in.consolidate", dict(variables, input="consolidated_soft.data",
+                                             settle_time=0.05), 2, "log.consolidate"))
     for infile, variables, ranks, log in steps:
         run_lmp(d, infile, variables, ranks=ranks, log=log)
     return d
@@ -85,28 +84,30 @@ def read_count(path):
     return {words[i]: int(words[i + 1]) for i in range(0, len(words), 2)}
 
 
-def dispatches_per_step(work):
+def dispatches_per_step(work, variables=None, folder="dispatches"):
     """Kokkos dispatches and deep copies per step of the reduced example with -sf kk (the
-    same per step at any size): the difference of a 200- and a 100-step run"""
-    d = os.path.join(work, "dispatches")
+    same per step at any size) and -var `variables`: the difference of a 2,000- and a
+    1,000-step run (whole fluid intervals for every N up to 200 that divides 1,000)"""
+    d = os.path.join(work, folder)
     hook = os.path.join(d, "kokkos_dispatches.so")
     if not os.path.exists(hook):
         prepare(d)
         subprocess.run(["g++", "-O2", "-shared", "-fPIC", "-o", hook,
                         os.path.join(HERE, "kokkos_dispatches.cpp")], check=True)
     totals = []
-    for steps in (100, 200):
+    for steps in (1000, 2000):
         out = os.path.join(d, "count_%d.txt" % steps)
         if os.path.exists(out):
             totals.append(read_count(out))
             continue
         env = dict(os.environ, KOKKOS_PROFILE_LIBRARY=hook, KCOUNT_OUT=out, OMP_NUM_THREADS="1",
                    OMP_PROC_BIND="false")
+        extra = [a for kv in (variables or {}).items() for a in ("-var", kv[0], str(kv[1]))]
         subprocess.run(["lmp", "-k", "on", "t", "1", "-sf", "kk", "-in", "in.tidal_shear",
-                        "-var", "run_steps", str(steps), "-screen", "none", "-log", "none"],
+                        "-var", "run_steps", str(steps), "-screen", "none", "-log", "none"] + extra,
                        cwd=d, env=env, check=True)
         totals.append(read_count(out))
-    per = {k: (totals[1][k] - totals[0][k]) / 100.0 for k in totals[0]}
+    per = {k: (totals[1][k] - totals[0][k]) / 1000.0 for k in totals[0]}
     return per["for"] + per["reduce"] + per["scan"], per["deep_copy"]
 
 

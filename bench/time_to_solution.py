@@ -13,6 +13,11 @@ Part "knobs": each knob of KNOBS alone, CYCLES cycles: its metrics against the b
 Part "layout": the default on the 2 cores as 2 MPI ranks, and as 1 rank x 2 OpenMP threads
   with /kk (each alone on the machine: wall time).
 Part "fast": the preset -var fast 1 (in.params), likewise.
+Part "table_s1": the Table S1 case (-var full 1, 9,600 grains, its bed prepared as the
+  default's, fidelity_full.prepare_full) on both cores (2 MPI ranks) for TABLE_S1_BUDGET wall
+  seconds with the default settings and with -var fast 1: the cost per step and per second of
+  model time, and the 45 s of Table S1 projected; on a GPU projected from the Kokkos dispatches
+  counted per step (bench/kokkos_dispatches.cpp) at assumed latencies.
 Part "report" (no runs): the tables (bench/time_to_solution_results.md) and the figure
   (bench/time_to_solution.png) from the runs in --work.
 
@@ -37,7 +42,8 @@ from scipy import stats
 
 import fidelity
 import fidelity_factors
-from example_runs import complete, load, prepare, read_cost, timed_run
+import fidelity_full
+from example_runs import complete, load, loop_time, prepare, read_cost, timed_run
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CYCLES, PERIOD = 4, 2.5                 # in.params (reduced case): f = 0.4 Hz
@@ -52,6 +58,9 @@ GRID_COARSE = {"grid_x": 2, "grid_y": 1, "grid_z": 3, "cell_z": CELL_Z * 1.5}
 
 # name: (label, family, in.tidal_shear -var overrides, ranks, lmp arguments, OpenMP threads)
 KNOBS = {
+    # the default again, on the plugin of the knobs' runs: their cost's reference (its metrics
+    # are member0's, bit for bit)
+    "default": ("default (eps 0.07, every 10, 3x2x4 cells, skin 0.4 r)", "reference", {}, 1, (), 1),
     "eps0.035": ("eps 0.035", "time step", {"eps": 0.035}, 1, (), 1),
     "eps0.1": ("eps 0.1", "time step", {"eps": 0.1}, 1, (), 1),
     "eps0.14": ("eps 0.14", "time step", {"eps": 0.14}, 1, (), 1),
@@ -85,6 +94,59 @@ METRICS = [
     ("v_creep", "creep velocity 0.2-0.6 (um/s)", 1e6, "%.1f"),
     ("n", "creep exponent n, cycles 2-4", 1.0, "%.2f"),
 ]
+
+
+TABLE_S1_BUDGET = 600                   # wall s of each Table S1 run
+TABLE_S1_TIME, TABLE_S1_KN = 45.0, 1.16e9   # s of model time (9 cycles of 5 s), k_n
+GOAL_HOURS = 12.0
+
+
+def recorded(run_dir, key):
+    """a parameter of a run as in.checkpoint_params recorded it"""
+    for line in open(os.path.join(run_dir, "checkpoint_params.txt")):
+        v = line.split()
+        if len(v) == 4 and v[1] == "ck_" + key:
+            return v[3]
+    raise KeyError(key)
+
+
+def table_s1(work, run=True):
+    """the Table S1 case with the default settings and -var fast 1 on 2 ranks: lines"""
+    bed = fidelity_full.prepare_full(work, bed="original", folder="table_s1_bed") if run else None
+    lines = ["| settings | steps in %d s | µs per step | Δt (s) | model s per wall hour | "
+             "45 s of Table S1 (h) | load before/after |" % TABLE_S1_BUDGET, "|---|---|---|---|---|---|---|"]
+    for name, variables in (("default", {}), ("fast", {"fast": 1})):
+        d = os.path.join(work, "table_s1_" + name)
+        if run and not read_cost(d):
+            prepare(d, ["in.tidal_shear_timed"])
+            shutil.copy(os.path.join(bed, "consolidated_1.data"), d)
+            left = TABLE_S1_BUDGET
+            timed_run(d, "in.tidal_shear_timed", dict(variables, full=1, timeout="%02d:%02d:%02d" % (
+                left // 3600, left // 60 % 60, left % 60)), ranks=2)
+        if not read_cost(d):
+            continue
+        seconds, steps = loop_time(os.path.join(d, "log.lammps"), last=False)
+        dt = float(recorded(d, "dt"))
+        per_hour = 3600.0 * steps * dt / seconds
+        cost = read_cost(d)
+        lines.append("| %s | %d | %.0f | %.3g | %.4f | %.1f | %.1f/%.1f |" % (
+            name, steps, 1e6 * seconds / steps, dt, per_hour, TABLE_S1_TIME / per_hour,
+            cost[2] if len(cost) > 2 else float("nan"), cost[3] if len(cost) > 3 else float("nan")))
+    # on a GPU: latency-bound at this size; the dispatches per step of each setting's /kk run
+    lines += ["", "| settings | kernels per step | deep copies per step | GPU µs per step (%.0f µs "
+              "a kernel, %.0f µs a copy, +%d host copies for fix wall/gran) | 45 s of Table S1 "
+              "on a GPU (h) |" % (fidelity_full.LAUNCH_US, fidelity_full.COPY_US,
+                                   fidelity_full.HOST_FIX_COPIES), "|---|---|---|---|---|"]
+    for name, variables in (("default", {}), ("fast", {"fast": 1})):
+        kernels, copies = fidelity_full.dispatches_per_step(work, variables, "dispatches_" + name)
+        us = kernels * fidelity_full.LAUNCH_US + (copies + fidelity_full.HOST_FIX_COPIES) * \
+            fidelity_full.COPY_US
+        d = os.path.join(work, "table_s1_" + name)
+        if read_cost(d):
+            dt = float(recorded(d, "dt"))
+            lines.append("| %s | %.1f | %.1f | %.0f | %.1f |" % (
+                name, kernels, copies, us, TABLE_S1_TIME / dt * us * 1e-6 / 3600))
+    return lines
 
 
 def members():
@@ -235,7 +297,8 @@ def plot(ens, bands, rows, work, path):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--part", required=True, choices=["ensemble", "knobs", "layout", "fast", "report"])
+    ap.add_argument("--part", required=True,
+                    choices=["ensemble", "knobs", "layout", "fast", "table_s1", "report"])
     ap.add_argument("--work", default="/tmp/pw_time_to_solution")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--only", default="", help="comma-separated run names of the part")
@@ -247,12 +310,16 @@ def main():
     os.makedirs(frozen, exist_ok=True)
     for path in os.environ.get("LD_LIBRARY_PATH", "").split(":"):
         if os.path.exists(os.path.join(path, "porewater.so")):
-            for so in ("porewater.so", "porewater_styles.so"):
-                shutil.copy(os.path.join(path, so), frozen)
+            for so in ("porewater.so", "porewater_styles.so"):    # a new file: runs of an
+                shutil.copy(os.path.join(path, so), os.path.join(frozen, so + ".new"))  # earlier
+                os.replace(os.path.join(frozen, so + ".new"), os.path.join(frozen, so))  # call keep theirs
             break
     else:
         sys.exit("no porewater.so on LD_LIBRARY_PATH: source scripts/env.sh first")
     os.environ["LD_LIBRARY_PATH"] = frozen + ":" + os.environ["LD_LIBRARY_PATH"]
+    if args.part == "table_s1":
+        print("\n".join(table_s1(args.work)))
+        return None
     specs = {"ensemble": {n: ("", "", v, 1, (), 1) for n, v in members().items()},
              "knobs": KNOBS, "layout": LAYOUTS, "fast": FAST}[args.part]
     if args.only:
