@@ -51,7 +51,12 @@ def count(plugin_dir, script, accel, pattern, workdir):
     else:
         args += ["-var", "steps", "100", "-var", "examples", os.path.join(REPO, "examples", "tidal_shear")]
     subprocess.run(args + accel, cwd=workdir, env=env, check=True, capture_output=True)
-    text = subprocess.run(["callgrind_annotate", "--inclusive=yes", out], capture_output=True,
+    return inclusive_count(out, pattern)
+
+
+def inclusive_count(profile, pattern):
+    """the inclusive instructions of the function matching `pattern` in a callgrind profile"""
+    text = subprocess.run(["callgrind_annotate", "--inclusive=yes", profile], capture_output=True,
                           text=True, check=True).stdout
     total = 0
     for line in text.splitlines():

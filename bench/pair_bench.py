@@ -22,6 +22,8 @@ Usage (after scripts/setup.sh):
 """
 import argparse, os, re, shutil, statistics, subprocess, sys, tempfile
 
+from instruction_counts import inclusive_count
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLE = os.path.join(HERE, "..", "examples", "tidal_shear")
 
@@ -87,14 +89,7 @@ def count(cwd, args, kokkos, pattern):
     subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + out, "lmp", "-log",
                     "none", "-screen", "none"] + args + (KOKKOS1 if kokkos else []),
                    cwd=cwd, env=env, check=True, capture_output=True)
-    text = subprocess.run(["callgrind_annotate", "--inclusive=yes", out], capture_output=True,
-                          text=True, check=True).stdout
-    best = 0
-    for line in text.splitlines():
-        m = re.match(r"\s*([\d,]+)\s+(?:\([^)]*\)\s+)?[^:\s]*:(.*)", line)
-        if m and re.search(pattern, m.group(2)):
-            best = max(best, int(m.group(1).replace(",", "")))
-    return best
+    return inclusive_count(out, pattern)
 
 
 def bed_scenes(work, data):
