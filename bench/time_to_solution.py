@@ -65,6 +65,12 @@ KNOBS = {
     "eps0.1": ("eps 0.1", "time step", {"eps": 0.1}, 1, (), 1),
     "eps0.14": ("eps 0.14", "time step", {"eps": 0.14}, 1, (), 1),
     "eps0.2": ("eps 0.2", "time step", {"eps": 0.2}, 1, (), 1),
+    # the two time steps between the default's and one clearly outside, again with one grain
+    # moved by 1e-12 m: is what puts a single run outside the band its own chaos or the step?
+    "eps0.1_again": ("eps 0.1, again (perturbed)", "time step", {"eps": 0.1, "perturb": PERTURB},
+                     1, (), 1),
+    "eps0.14_again": ("eps 0.14, again (perturbed)", "time step",
+                      {"eps": 0.14, "perturb": PERTURB}, 1, (), 1),
     "every1": ("fluid every 1", "fluid interval", {"fluid_every": 1}, 1, (), 1),
     "every50": ("fluid every 50", "fluid interval", {"fluid_every": 50}, 1, (), 1),
     "every200": ("fluid every 200", "fluid interval", {"fluid_every": 200}, 1, (), 1),
