@@ -6,7 +6,10 @@ Short runs (2 time-series rows, 2,340 steps) of:
   velocity Verlet and the converged pressure solve;
 - `-var original 1`: the same bed with the original's integrator (nve/sphere/ty3) and
   pressure iteration (relaxed; it ran: sweeps > 0);
-- `-var bed frictionless`: the former default, consolidated_frictionless_0.data.
+- `-var bed frictionless`: the former default, consolidated_frictionless_0.data;
+- `-var fast 1`: the default's bed and numerics at twice its time step (eps 0.14), the fluid
+  every 25 steps (the default's fluid interval in seconds at every 50) and a skin of 0.2 r
+  (2 rows: 1,150 steps, as a row is every 25 round(2.5 s / (1000 dt 25)) = 575 steps).
 Each run's fluid cell height, mu_f and plate mass must be those that keep the reduced case's
 groups for its bed's own H and phi (groups.py bed_parameters, to the 4 digits in.params
 gives them: 5e-4), every value finite; the original's bed starts at the original run's
@@ -29,14 +32,20 @@ EXAMPLE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "
 sys.path.insert(0, EXAMPLE)
 from groups import bed_geometry, bed_parameters    # noqa: E402
 
-# name: (-var switches, bed file, integrator, solver, coordination at the first row or None)
+# name: (-var switches, bed file, integrator, solver, coordination at the first row or None,
+#        steps, {parameter: value} besides, where "dt" is relative to the default's)
 CASES = {
-    "default": ([], "consolidated_0.data", "nve/sphere", "converged", 4.58),
-    "original": (["original", "1"], "consolidated_0.data", "nve/sphere/ty3", "relaxed", 4.58),
+    "default": ([], "consolidated_0.data", "nve/sphere", "converged", 4.58, 2340,
+                {"fluid_every": 10, "skin": 0.4}),
+    "original": (["original", "1"], "consolidated_0.data", "nve/sphere/ty3", "relaxed", 4.58, 2340,
+                 {"dt": 1.0}),
     "frictionless": (["bed", "frictionless"], "consolidated_frictionless_0.data", "nve/sphere",
-                     "converged", None),
+                     "converged", None, 2340, {}),
+    "fast": (["fast", "1"], "consolidated_0.data", "nve/sphere", "converged", 4.58, 1150,
+             {"dt": 2.0, "fluid_every": 25, "skin": 0.2}),
 }
 ok = True
+default_dt = None
 
 
 def check(cond, what):
@@ -45,20 +54,21 @@ def check(cond, what):
     ok &= bool(cond)
 
 
-def run(lmp, work, env, switches, log):
-    return subprocess.run([lmp, "-in", "in.tidal_shear", "-var", "run_steps", "2340", "-log", log,
+def run(lmp, work, env, switches, log, steps=2340):
+    return subprocess.run([lmp, "-in", "in.tidal_shear", "-var", "run_steps", str(steps), "-log", log,
                            "-screen", "none"] + [a for i in range(0, len(switches), 2)
                                                  for a in ("-var", *switches[i:i + 2])],
                           cwd=work, env=env, capture_output=True, text=True)
 
 
 def case(lmp, work, env, name):
-    switches, bed, integrator, solver, z_start = CASES[name]
+    global default_dt
+    switches, bed, integrator, solver, z_start, steps, besides = CASES[name]
     print("-- %s (%s)" % (name, " ".join(switches) or "no switches"))
     for f in ("timeseries.txt", "checkpoint_params.txt"):
         if os.path.exists(os.path.join(work, f)):
             os.remove(os.path.join(work, f))
-    out = run(lmp, work, env, switches, "log." + name)
+    out = run(lmp, work, env, switches, "log." + name, steps)
     check(out.returncode == 0, "runs (exit %d)" % out.returncode)
     params = {}
     for line in open(os.path.join(work, "checkpoint_params.txt")):
@@ -73,6 +83,12 @@ def case(lmp, work, env, name):
     check("read_data %s" % bed in log, "starts from %s" % bed)
     check(params.get("integrator") == integrator, "integrator %s" % params.get("integrator"))
     check(params.get("solver") == solver, "solver %s" % params.get("solver"))
+    if name == "default":
+        default_dt = float(params["dt"])
+    for key, value in besides.items():
+        got = float(params[key]) / (default_dt if key == "dt" else 1.0)
+        check(abs(got - value) < 1e-12 * value, "%s %s (%s%g)" % (
+            key, params[key], "the default's x " if key == "dt" else "", value))
     height, phi = bed_geometry(os.path.join(EXAMPLE, bed))
     for key, value in bed_parameters(height, phi).items():
         got = float(params[key])
