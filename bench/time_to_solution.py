@@ -85,16 +85,20 @@ KNOBS = {
 LAYOUTS = {
     "np2": ("2 MPI ranks", "layout", {}, 2, (), 1),
     "kk2": ("1 rank x 2 threads, /kk", "layout", {}, 1, ("-k", "on", "t", "2", "-sf", "kk"), 2),
+    # the creep of the 2-rank runs above the 1-rank ensemble's: another 2-rank run
+    "np2_again": ("2 MPI ranks, again (perturbed)", "layout", {"perturb": PERTURB}, 2, (), 1),
 }
 FAST = {"fast": ("-var fast 1", "preset", {"fast": 1}, 2, (), 1),
         "fast_again": ("-var fast 1, again (perturbed)", "preset", {"fast": 1, "perturb": PERTURB},
-                       2, (), 1)}
+                       2, (), 1),
+        # the preset's settings on 1 rank: the settings apart from the layout
+        "fast_1rank": ("-var fast 1 on 1 rank", "preset", {"fast": 1}, 1, (), 1)}
 # the runs of one setting: their mean is judged against the ensemble's mean (replicated())
 REPLICATES = {"eps0.1": ("eps0.1", "eps0.1_again"), "eps0.14": ("eps0.14", "eps0.14_again"),
-              "fast": ("fast", "fast_again")}
+              "fast": ("fast", "fast_again"), "np2": ("np2", "np2_again")}
 # runs that change only the order in which forces are summed, i.e. differ from the default by
 # round-off in another way than the ensemble's: a check of the band
-ROUNDOFF_ONLY = ("skin0.2", "skin0.8", "check10", "np2", "kk2")
+ROUNDOFF_ONLY = ("skin0.2", "skin0.8", "check10", "np2", "kk2", "np2_again")
 
 # key of fidelity_factors.factor_metrics (per cycle), label, scale, format
 METRICS = [
