@@ -232,6 +232,12 @@ def outside(m, bands):
     return [k for k in bands if k not in m or abs(m[k] - bands[k][0]) > bands[k][1]]
 
 
+def cells(m, bands):
+    """table cells of run m: each metric with its error in band half-widths"""
+    return " | ".join("%s (%+.1f)" % (f % (scale * m[key]), (m[key] - bands[key][0]) / bands[key][1])
+                      if key in m and key in bands else "none" for key, _, scale, f in METRICS)
+
+
 def cost_of(work, name):
     """(seconds, 'CPU' or 'wall', load before, after): CPU time of a 1-rank run, wall time of
     a run on both cores"""
@@ -283,14 +289,10 @@ def report(work):
         if not m:
             continue
         cost = cost_of(work, name)
-        errs = {k: (m[k] - bands[k][0]) / bands[k][1] for k in bands if k in m}
-        inside = all(abs(e) <= 1 for e in errs.values()) and set(errs) == set(bands)
-        rows[name] = (spec, m, cost, errs, inside)
-        cells = []
-        for key, _, scale, f in METRICS:
-            cells.append("%s (%+.1f)" % (f % (scale * m[key]), errs[key]) if key in errs else "none")
+        inside = not outside(m, bands)
+        rows[name] = (spec, m, cost, inside)
         lines.append("| %s | %s | %s | %s | %s |" % (
-            spec[0], "%.0f %s" % cost[:2] if cost else "", " | ".join(cells), "yes" if inside else "no",
+            spec[0], "%.0f %s" % cost[:2] if cost else "", cells(m, bands), "yes" if inside else "no",
             "no" if outside(m, family) else "yes"))
     lines += roundoff_check(work, ens, bands) + replicated(work, ens)
     plot(ens, bands, rows, work, os.path.join(HERE, "time_to_solution.png"))
@@ -335,12 +337,8 @@ def replicated(work, ens):
             continue
         b = bands_of(ens, len(runs))
         mean = {k: float(np.mean([r[k] for r in runs])) for k in b if all(k in r for r in runs)}
-        cells = []
-        for key, _, scale, f in METRICS:
-            cells.append("%s (%+.1f)" % (f % (scale * mean[key]), (mean[key] - b[key][0]) / b[key][1])
-                         if key in mean else "none")
         lines.append("| %s | %d | %s | %s | %s |" % (
-            setting, len(runs), " | ".join(cells), "yes" if not outside(mean, b) else "no",
+            setting, len(runs), cells(mean, b), "yes" if not outside(mean, b) else "no",
             "yes" if not outside(mean, bands_of(ens, len(runs), family=True)) else "no"))
     return lines
 
@@ -362,7 +360,7 @@ def plot(ens, bands, rows, work, path):
         for name, c in zip(ens, ens_costs):
             if c and key in ens[name]:
                 ax.plot(c[0], scale * ens[name][key], "o", color="0.4", ms=4)
-        for name, (spec, mm, cost, errs, inside) in rows.items():
+        for name, (spec, mm, cost, inside) in rows.items():
             if cost and key in mm:
                 ax.plot(cost[0], scale * mm[key], "s" if inside else "x", color=colours[spec[1]], ms=6)
                 ax.annotate(name, (cost[0], scale * mm[key]), fontsize=6)

@@ -32,6 +32,7 @@ EXAMPLE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "
                        "tidal_shear")
 # 12,000 steps in chunks of 960 (8 rows of 120 steps, 10,000 rows per cycle): 12 checkpoints,
 # two profile blocks (every 6,000 steps)
+ROW_STEPS, CHUNK_STEPS = 120, 960
 RUN = ["-var", "run_steps", "12000", "-var", "samples", "10000", "-var", "checkpoint", "0.00206",
        "-var", "write_state", "final"]
 
@@ -192,12 +193,12 @@ def main():
             step = continued_from(d, "log.continued")
             print(f"{name}: {detail} after {rows_at_kill} rows; continued from step {step}")
             if rng is None:
-                # the write in progress is the checkpoint at the last row's step (8 rows of 120
-                # steps per chunk of 960, the rows printed before the chunk's checkpoint): the
-                # one before it is used. Usually the second write (step 960 used); on a loaded
-                # machine the wait for the temporary file can miss a write and catch a later one
-                expected = 120 * rows_at_kill - 960
-                good = step == expected and expected >= 960
+                # the write in progress is the checkpoint at the last row's step (a chunk's rows
+                # are printed before its checkpoint): the one before it is used. Usually the
+                # second write (step 960 used); on a loaded machine the wait for the temporary
+                # file can miss a write and catch a later one
+                expected = ROW_STEPS * rows_at_kill - CHUNK_STEPS
+                good = step == expected and expected >= CHUNK_STEPS
                 print(("ok    " if good else "FAIL  ") + f"{name}: continued from the checkpoint "
                       f"before the one being written (step {step}, expected {expected})")
                 ok &= good
