@@ -1,15 +1,19 @@
 """Runs of examples/tidal_shear for the benchmarks (bench/wall_damping.py, bench/fidelity.py):
-a work folder with the example's inputs, lmp with -var overrides, the time series."""
+a work folder with the example's inputs, lmp with -var overrides; the time series through
+analysis/porewater_analysis, which importing this module puts on the path."""
 import os
 import re
 import shutil
 import subprocess
+import sys
 import time
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLE = os.path.join(HERE, "..", "examples", "tidal_shear")
+sys.path.insert(0, os.path.join(HERE, "..", "analysis"))
+from porewater_analysis.timeseries import complete, load  # noqa: E402,F401  (the benchmarks' import)
 
 
 # the example's bed before the original's preparation became the default (in.params `bed`):
@@ -52,11 +56,11 @@ def time_step(kn, eps=0.07, radius=0.01, rho=2600.0):
 def timed_run(workdir, infile, variables, ranks=1, args=(), threads=1):
     """run_lmp, its CPU and wall seconds written to workdir/cost.txt (with the load average
     of the last minute before and after)"""
-    load = os.getloadavg()[0]
+    load_before = os.getloadavg()[0]
     start = time.time()
     cpu = run_lmp(workdir, infile, variables, ranks=ranks, args=args, threads=threads)
     with open(os.path.join(workdir, "cost.txt"), "w") as f:
-        f.write("%.1f %.1f %.2f %.2f\n" % (cpu, time.time() - start, load, os.getloadavg()[0]))
+        f.write("%.1f %.1f %.2f %.2f\n" % (cpu, time.time() - start, load_before, os.getloadavg()[0]))
     return cpu
 
 
@@ -82,16 +86,3 @@ def prepare(workdir, extra=()):
             shutil.copy(os.path.join(EXAMPLE, name), workdir)
     for name in extra:
         shutil.copy(os.path.join(HERE, name), workdir)
-
-
-def load(path):
-    names = open(path).readline().lstrip("# ").split()
-    data = np.loadtxt(path, ndmin=2)
-    return {n: data[:, k] for k, n in enumerate(names)}
-
-
-def complete(path, t_end):
-    try:
-        return load(path)["time"][-1] >= t_end - 0.01
-    except (OSError, ValueError, IndexError):
-        return False

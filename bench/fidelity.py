@@ -47,17 +47,17 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
+from example_runs import FRICTIONLESS, complete, load, prepare, read_cost, timed_run
 import fidelity_factors
 import fidelity_full
 import fidelity_stress
-from example_runs import FRICTIONLESS, complete, load, prepare, read_cost, timed_run
+from porewater_analysis.cycles import (AMP, PERIOD, SLIP_VELOCITY, SMOOTH, creep_points,
+                                       cycle_metrics, fmt, inertia_number,
+                                       original_data_file_metrics, power_law, smoothed_velocity)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CYCLES = 4
-PERIOD, AMP, SIGMA0, TAU = 2.5, 70.0e3, 80.0e3, 10.0e3    # examples/tidal_shear/in.params
-DIAMETER, RHO = 0.02, 2600.0
-SLIP_VELOCITY = 1e-2       # m/s: a slip, at least 10x any creep velocity (checked)
-SMOOTH = 0.025             # s: velocity from the displacement over this window
+SIGMA0 = 80.0e3            # Pa: examples/tidal_shear/in.params
 VARIANTS = {  # name: (label, k_c or None for dry, -var overrides)
     "wet": ("k_c 3.5e-13 (default)", 3.5e-13, {}),
     "mid": ("k_c 3.5e-14", 3.5e-14, {"kc": 3.5e-14}),
@@ -73,56 +73,6 @@ def run_variant(work, name):
         return name, None
     prepare(d)
     return name, timed_run(d, "in.tidal_shear", dict(FRICTIONLESS, **VARIANTS[name][2], cycles=CYCLES))
-
-
-def smoothed_velocity(t, x):
-    n = max(1, int(round(SMOOTH / np.median(np.diff(t)))))
-    v = np.full_like(x, np.nan)
-    v[n // 2:len(x) - (n - n // 2)] = (x[n:] - x[:-n]) / (t[n:] - t[:-n])
-    return v
-
-
-def cycle_metrics(c, wet, period=PERIOD, cycles=CYCLES, stuck_until=0.0):
-    """per cycle; the slip: the first above SLIP_VELOCITY after phase `stuck_until` (the stuck
-    part of the cycle: a blip as the last cycle's slip ends is not this one's)"""
-    t, x, z = c["time"], c["x_top"], c["z_wall"]
-    v = smoothed_velocity(t, x)
-    rows = []
-    for k in range(cycles):
-        # (the sample at t = 0 precedes the first force evaluation: no grain force on the plate)
-        inside = (t >= k * period) & (t < (k + 1) * period) & (t > 0)
-        phase = t[inside] / period - k
-        vi, xi, zi = v[inside], x[inside], z[inside]
-        creep = (phase > 0.2) & (phase < 0.6)
-        pc, = np.nonzero(creep)
-        v_creep = (xi[pc[-1]] - xi[pc[0]]) / (period * (phase[pc[-1]] - phase[pc[0]]))
-        r = {"cycle": k + 1, "v_creep": v_creep}
-        # a slip of the cycle before that goes on into this one is not this cycle's
-        slow = np.nonzero(vi <= SLIP_VELOCITY)[0]
-        first_slow = slow[0] if len(slow) else len(vi)
-        first_slow = max(first_slow, np.searchsorted(phase, stuck_until))
-        fast = first_slow + np.nonzero(vi[first_slow:] > SLIP_VELOCITY)[0]
-        if len(fast):
-            i0 = fast[0]
-            after = np.nonzero(vi[i0:] < SLIP_VELOCITY)[0]
-            i1 = i0 + (after[0] if len(after) else len(vi) - 1 - i0)
-            r.update(onset=phase[i0], end=phase[i1], peak=np.nanmax(vi[i0:i1 + 1]),
-                     ratio=TAU / c["N_applied"][inside][i0],
-                     peak_phase=phase[i0 + int(np.nanargmax(vi[i0:i1 + 1]))],
-                     mean=(xi[i1] - xi[i0]) / (period * (phase[i1] - phase[i0])),
-                     slip=xi[i1] - xi[i0], dilation=np.max(zi[i0:i1 + 1]) - zi[i0])
-        zc = c["coordination"][inside]
-        r["z_min"], r["z_min_phase"] = zc.min(), phase[np.argmin(zc)]
-        r["n_min_phase"] = phase[np.argmin(c["N_grains"][inside])]
-        if wet:
-            dp = (c["p_mean"] - c["p_top"])[inside] / AMP
-            r["dp_min"], r["dp_max"] = dp.min(), dp.max()
-        rows.append(r)
-    return rows
-
-
-def fmt(r, key, f, scale=1.0):
-    return f % (scale * r[key]) if key in r else "none"
 
 
 def cycle_table(data):
@@ -223,38 +173,6 @@ def plot_permeability(data, keep, path):
 
 # ---------------------------------------------------------------- creep from the cycles
 
-def creep_points(c, window=0.05, period=PERIOD, cycles=CYCLES):
-    """(tau/N, gamma_dot, cycle) over phases 0.2-0.6 of each cycle: the slope of the top
-    layer's displacement over windows of `window` cycles, over the plate's height"""
-    t, x = c["time"], c["x_top"]
-    out = []
-    for k in range(cycles):
-        for start in np.arange(0.2, 0.6 - 1e-9, window):
-            w = (t >= (k + start) * period) & (t < (k + start + window) * period)
-            if w.sum() < 5:
-                continue
-            slope = np.polyfit(t[w], x[w], 1)[0]
-            n = np.mean(c["N_applied"][w])
-            out.append((TAU / n, slope / np.mean(c["z_wall"][w]), k + 1, n))
-    return np.array(out)
-
-
-def inertia_number(points):
-    """I = gamma_dot d sqrt(rho/N) of each window with a positive rate"""
-    p = points[points[:, 1] > 0]
-    return p[:, 1] * DIAMETER * np.sqrt(RHO / p[:, 3])
-
-
-def power_law(points):
-    """n, its 95 % half-interval, windows used and dropped (rate <= 0), r^2 of
-    log gamma_dot = n log(tau/N) + c"""
-    p = points[points[:, 1] > 0]
-    if len(p) < 4:
-        return None
-    slope, half, r2 = fidelity_stress.log_log_fit(p[:, 0], p[:, 1])
-    return slope, half, len(p), len(points) - len(p), r2
-
-
 def save_rate_plot(fig, ax, path):
     ax.set_xlabel("tau/N (N: the applied normal stress)")
     ax.set_ylabel("shear strain rate v_x/H (1/s)")
@@ -268,7 +186,7 @@ def creep_report(series, path):
              "|---|---|---|---|---|---|"]
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for name, (label, c) in series.items():
-        pts = creep_points(c)
+        pts = creep_points(c, cycles=CYCLES)
         cycles = sorted(set(pts[:, 2].astype(int)))
         sets = [(str(k), pts[pts[:, 2] == k]) for k in cycles]
         sets += [("%d-%d pooled" % (cycles[1], cycles[-1]), pts[pts[:, 2] >= cycles[1]])] if len(cycles) > 2 else []
@@ -315,7 +233,7 @@ def time_scaling_report(fast, slow, path):
              "phase, resolved windows (tau/N) | shear strain over phases 0.2-0.6, f and f/2 "
              "| largest I, f and f/2 | slip (mm) and its onset phase, f and f/2 |",
              "|---|---|---|---|---|---|---|"]
-    slips = [cycle_metrics(fast, True), cycle_metrics(slow, True, 1.0 / SLOW["freq"], SLOW_CYCLES)]
+    slips = [cycle_metrics(fast, True, PERIOD, CYCLES), cycle_metrics(slow, True, 1.0 / SLOW["freq"], SLOW_CYCLES)]
     fig, ax = plt.subplots(figsize=(6, 4.5))
     for k in range(1, SLOW_CYCLES + 1):
         f, sl = pf[pf[:, 2] == k], ps[ps[:, 2] == k]
@@ -400,7 +318,7 @@ def main():
     if args.part == "factors":
         if not args.analyse_only:
             fidelity_factors.run_all(args.work, jobs_map)
-        original = fidelity_factors.original_metrics(os.path.join(HERE, "original_run_contacts.txt"))
+        original = original_data_file_metrics(os.path.join(HERE, "original_run_contacts.txt"))
         lines, results = fidelity_factors.table(args.work, original, 2)
         first, _ = fidelity_factors.table(args.work, original, 1)
         fidelity_factors.plot(results, os.path.join(HERE, "fidelity_factors.png"))
@@ -428,7 +346,7 @@ def main():
     series, costs = load_cycles(args.work)
     costs = {VARIANTS[n][0]: c for n, c in costs.items()}
     keep = list(range(2, CYCLES + 1))    # cycle 1 starts from the consolidated, unsheared bed
-    data = {n: (label, cycle_metrics(c, VARIANTS[n][1] is not None))
+    data = {n: (label, cycle_metrics(c, VARIANTS[n][1] is not None, PERIOD, CYCLES))
             for n, (label, c) in series.items()}
     if args.part in ("cycle", "all"):
         plot_cycles(series, os.path.join(HERE, "fidelity_cycle.png"))

@@ -20,6 +20,9 @@ import sys
 import numpy as np
 
 from example_runs import EXAMPLE, FRICTIONLESS, complete, load, prepare, read_cost, run_lmp, timed_run
+from porewater_analysis.cycles import PERIOD, after_min_n, factor_metrics, fmt
+from porewater_analysis.original import ORIGINAL_CYCLES
+from porewater_analysis.timeseries import run_parameters
 sys.path.insert(0, EXAMPLE)
 from groups import bed_geometry, bed_parameters as bed_groups    # noqa: E402
 
@@ -134,65 +137,6 @@ def run_factor(work, name):
     return name, timed_run(d, "in.tidal_shear", variables)
 
 
-# ---------------------------------------------------------------- metrics
-
-PERIOD, AMP = 2.5, 70.0e3                 # in.params (reduced case)
-ORIGINAL_PERIOD, ORIGINAL_CYCLES = 5.0, 9  # Table S1: 0.2 Hz, 45 s analysed
-LANDING = 0.1                             # cycle after the slip's end
-
-
-def phase_mask(t, period, cycle, lo, hi):
-    return (t >= (cycle - 1 + lo) * period) & (t < (cycle - 1 + hi) * period)
-
-
-def after_min_n(phase):
-    """cycles after the minimum of N (phase 0.75), in [0, 1): a collapse in the landing
-    just past the cycle's end stays next to one just before it"""
-    return (phase - 0.75) % 1.0
-
-
-def original_metrics(path):
-    """coordination of the original run's own data file: start, while creeping (phases
-    0.2-0.6), the minimum and its phase, over cycles 2-9 (the first dropped, as here)"""
-    t, _, z = np.loadtxt(path, unpack=True)
-    creep, mins = [], []
-    for k in range(2, ORIGINAL_CYCLES + 1):
-        creep.append(np.mean(z[phase_mask(t, ORIGINAL_PERIOD, k, 0.2, 0.6)]))
-        inside = phase_mask(t, ORIGINAL_PERIOD, k, 0.0, 1.0)
-        i = np.argmin(z[inside])
-        mins.append((z[inside][i], after_min_n(t[inside][i] / ORIGINAL_PERIOD - (k - 1))))
-    return {"z_start": z[0], "z_creep": creep, "z_min": [m[0] for m in mins],
-            "z_min_phase": [m[1] for m in mins]}
-
-
-def factor_metrics(c, cycles):
-    """per cycle {cycle: metrics}: fidelity.cycle_metrics' slip for the whole cycles, plus
-    coordination while creeping (phases 0.2-0.6), suction during the slip and the plate's
-    landing; n of each cycle's creep windows (a partial cycle: those it covers)"""
-    import fidelity
-    t = c["time"]
-    whole = int(np.floor(cycles + 1e-9))
-    out = {r["cycle"]: r for r in fidelity.cycle_metrics(c, True, PERIOD, whole, stuck_until=0.2)} \
-        if whole else {}
-    pts = fidelity.creep_points(c, cycles=int(np.ceil(cycles - 1e-9)))
-    for k in range(1, int(np.ceil(cycles - 1e-9)) + 1):
-        r = out.setdefault(k, {"cycle": k})
-        creep = phase_mask(t, PERIOD, k, 0.2, 0.6)
-        if t[creep].max() < (k - 1 + 0.59) * PERIOD:
-            continue                      # the run ends before this cycle's creep does
-        r["z_creep"] = np.mean(c["coordination"][creep])
-        r["fit"] = fidelity.power_law(pts[pts[:, 2] == k])
-        if "onset" in r:
-            slip = phase_mask(t, PERIOD, k, r["onset"], r["end"] + 1e-9)
-            r["suction"] = np.min((c["p_mean"] - c["p_top"])[slip]) / AMP
-            # only where the run covers the whole window (a slip to the cycle's end: none)
-            if t[-1] >= (k - 1 + r["end"] + LANDING) * PERIOD - 1e-9:
-                land = phase_mask(t, PERIOD, k, r["end"], r["end"] + LANDING)
-                excess = (c["N_grains"] - c["N_applied"])[land] / AMP
-                r["landing"] = np.sqrt(np.mean(excess ** 2))
-    return out
-
-
 def original_row(o, cycles):
     lo = lambda v, f: (f + " (" + f + "-" + f + ")") % (np.mean(v), min(v), max(v))
     phases = sorted(o["z_min_phase"])
@@ -207,7 +151,6 @@ def table(work, original, cycle):
     lines = ["| run | n (95 %) | Z creeping | min Z (cycles after the minimum of N) | slip (mm) | onset | end "
              "| tau/N at onset | suction in slip (A) | landing rms (A) | wall s (CPU s) |",
              "|" + "---|" * 11, original_row(original, "2-%d" % ORIGINAL_CYCLES)]
-    from fidelity import fmt
     results = {}
     for name, (label, _, _, cycles) in FACTORS.items():
         d = os.path.join(work, "factors", name)
@@ -302,21 +245,12 @@ def bisect_table(probes):
 STRESS_N, STRESS_RATIOS = 25.0e3, (0.2, 0.3)
 
 
-def recorded(work, name, key):
-    """a parameter of a factor's run as in.checkpoint_params recorded it"""
-    for line in open(os.path.join(work, "factors", name, "checkpoint_params.txt")):
-        v = line.split()
-        if len(v) == 4 and v[1] == "ck_" + key:
-            return v[3]
-    raise KeyError(key)
-
-
 def constant_stress(work, name, jobs_map):
     import fidelity_stress
     variables = factor_variables(work, name)
     variables.pop("cycles")
-    mass_factor = float(recorded(work, name, "mass_factor"))
-    dt = float(recorded(work, name, "dt"))
+    recorded = run_parameters(os.path.join(work, "factors", name))
+    mass_factor, dt = recorded["mass_factor"], recorded["dt"]
 
     def one(ratio):
         d = os.path.join(work, "stress_" + name, "r%.2f" % ratio)

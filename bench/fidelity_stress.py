@@ -16,6 +16,7 @@ import numpy as np
 from scipy import stats
 
 from example_runs import FRICTIONLESS, complete, load, prepare, run_lmp, time_step
+from porewater_analysis.cycles import log_log_fit
 
 SIGMA0 = 80.0e3
 DIAMETER, RHO = 0.02, 2600.0
@@ -121,12 +122,6 @@ def series(work, jobs_map, states=tuple(STATES), run=True):
                 r.update(measure(holds[p]))
             out[p if fluid else p + ("dry",)] = r
     return out
-
-
-def log_log_fit(x, y):
-    """log y = n log x + c: n, its 95 % half-interval, r^2"""
-    fit = stats.linregress(np.log(x), np.log(y))
-    return fit.slope, stats.t.ppf(0.975, len(x) - 2) * fit.stderr, fit.rvalue ** 2
 
 
 def power_law(rows):

@@ -32,6 +32,8 @@ import time
 import numpy as np
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(REPO, "analysis"))
+from porewater_analysis.timeseries import load as load_series  # noqa: E402
 EXAMPLE = os.path.join(REPO, "examples", "tidal_shear")
 # the time-series columns compared (timeseries.txt of in.tidal_shear), and what they are
 QUANTITIES = [
@@ -111,9 +113,7 @@ def finish(d, p):
         sys.exit(f"run in {d} failed:\n" + open(os.path.join(d, "shell.out")).read()[-2000:])
     log = open(os.path.join(d, "log.lammps")).read()
     loops = re.findall(r"Loop time of (\S+) on (\d+) procs for (\d+) steps", log)    # per chunk
-    names = open(os.path.join(d, "timeseries.txt")).readline().lstrip("# ").split()
-    data = np.loadtxt(os.path.join(d, "timeseries.txt"), ndmin=2)
-    return dict(series={n: data[:, k] for k, n in enumerate(names)},
+    return dict(series=load_series(os.path.join(d, "timeseries.txt")),
                 seconds=sum(float(m[0]) for m in loops), steps=sum(int(m[2]) for m in loops))
 
 

@@ -40,6 +40,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLE = os.path.join(HERE, "..", "examples", "tidal_shear")
+sys.path.insert(0, os.path.join(HERE, "..", "analysis"))
+from porewater_analysis.timeseries import load as read_series  # noqa: E402
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMP_NUM_THREADS="1")
 STEPS_S1 = {"45 s analysed": 45.0 / 2.14e-7, "59 s run": 59.0 / 2.14e-7}
@@ -116,12 +118,6 @@ def edited(text, old, new):
     if old not in text:
         sys.exit(f"examples/tidal_shear/in.tidal_shear no longer contains {old!r}")
     return text.replace(old, new)
-
-
-def read_series(path):
-    names = open(path).readline().lstrip("# ").split()
-    data = np.loadtxt(path, ndmin=2)
-    return {n: data[:, k] for k, n in enumerate(names)}
 
 
 def every_sweep(workdir, horizon, ranks, report):

@@ -2,8 +2,12 @@
 """Time to solution of examples/tidal_shear: the chaotic spread of the outputs the paper
 reports, each numerical knob's error against that spread, and what each costs.
 
-Part "ensemble": the default run and ENSEMBLE - 1 copies that differ only by one grain moved
-  by 1e-12 m at the start (in.tidal_shear -var perturb, perturb_id), CYCLES cycles each.
+Part "ensemble": the default run and ENSEMBLE - 1 copies whose sheared bed differs at the
+  start by round-off: every grain of it moved by a random displacement of up to PERTURB
+  along each axis (in.tidal_shear -var perturb, perturb_seed K), CYCLES cycles each, 1 rank.
+Part "ensemble_np2": the default and NP2_ENSEMBLE - 1 of the same perturbed starts (seeds
+  1, 2, ...: the same grains as the 1-rank members of those seeds) on 2 MPI ranks, one at a
+  time on both cores: whether the decomposition shifts the outputs beyond the chaos.
   Per run, the metrics (METRICS) averaged over cycles 2-4 (cycle 1 starts from the unsheared
   bed), and the creep exponent n pooled over the windows of cycles 2-4. The band of a metric:
   the 95 % prediction interval of one more run of the ensemble, mean +- t(0.975, N-1) s
@@ -40,15 +44,16 @@ from concurrent.futures import ThreadPoolExecutor
 import numpy as np
 from scipy import stats
 
-import fidelity
-import fidelity_factors
-import fidelity_full
 from example_runs import complete, load, loop_time, prepare, read_cost, timed_run
+import fidelity_full
+from porewater_analysis.cycles import creep_points, cycle_metrics, factor_metrics, power_law
+from porewater_analysis.timeseries import run_parameters
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CYCLES, PERIOD = 4, 2.5                 # in.params (reduced case): f = 0.4 Hz
 KEEP = (2, 3, 4)                        # cycle 1 starts from the unsheared bed
-ENSEMBLE, PERTURB = 10, 1.0e-12         # members; m, grain perturb_id moved in x
+ENSEMBLE, NP2_ENSEMBLE = 8, 6          # members on 1 rank, on 2 ranks
+PERTURB = 1.0e-12                       # m: the largest random displacement of a bed grain
 CELL_Z = 0.08176                        # in.params, the default bed's fluid cells
 # the default's fluid grid is 3 x 2 x 4 cells of 0.087 x 0.065 x 0.082 m (4.3 x 3.3 x 4.1
 # diameters, the original's ~4.4); the other two keep the active layers' top face where it is
@@ -100,7 +105,7 @@ REPLICATES = {"eps0.1": ("eps0.1", "eps0.1_again"), "eps0.14": ("eps0.14", "eps0
 # round-off in another way than the ensemble's: a check of the band
 ROUNDOFF_ONLY = ("skin0.2", "skin0.8", "check10", "np2", "kk2", "np2_again")
 
-# key of fidelity_factors.factor_metrics (per cycle), label, scale, format
+# key of porewater_analysis.cycles.factor_metrics (per cycle), label, scale, format
 METRICS = [
     ("slip", "slip (mm)", 1e3, "%.0f"),
     ("onset", "onset (phase)", 1.0, "%.3f"),
@@ -119,15 +124,6 @@ TABLE_S1_TIME, TABLE_S1_KN = 45.0, 1.16e9   # s of model time (9 cycles of 5 s),
 GOAL_HOURS = 12.0
 
 
-def recorded(run_dir, key):
-    """a parameter of a run as in.checkpoint_params recorded it"""
-    for line in open(os.path.join(run_dir, "checkpoint_params.txt")):
-        v = line.split()
-        if len(v) == 4 and v[1] == "ck_" + key:
-            return v[3]
-    raise KeyError(key)
-
-
 def table_s1(work, run=True):
     """the Table S1 case with the default settings and -var fast 1 on 2 ranks: lines"""
     bed = fidelity_full.prepare_full(work, bed="original", folder="table_s1_bed") if run else None
@@ -144,7 +140,7 @@ def table_s1(work, run=True):
         if not read_cost(d):
             continue
         seconds, steps = loop_time(os.path.join(d, "log.lammps"), last=False)
-        dt = float(recorded(d, "dt"))
+        dt = run_parameters(d)["dt"]
         per_hour = 3600.0 * steps * dt / seconds
         cost = read_cost(d)
         lines.append("| %s | %d | %.0f | %.3g | %.4f | %.1f | %.1f/%.1f |" % (
@@ -161,18 +157,23 @@ def table_s1(work, run=True):
             fidelity_full.COPY_US
         d = os.path.join(work, "table_s1_" + name)
         if read_cost(d):
-            dt = float(recorded(d, "dt"))
+            dt = run_parameters(d)["dt"]
             lines.append("| %s | %.1f | %.1f | %.0f | %.1f |" % (
                 name, kernels, copies, us, TABLE_S1_TIME / dt * us * 1e-6 / 3600))
     return lines
 
 
-def members():
-    """name: -var overrides of the ensemble's runs"""
-    runs = {"member0": {}}
-    for k in range(1, ENSEMBLE):
-        runs["member%d" % k] = {"perturb": PERTURB, "perturb_id": k}
+def members(prefix="member", count=ENSEMBLE):
+    """name: -var overrides of an ensemble's runs (member0 the unperturbed default; member K
+    perturbed with seed K, so that the same K starts from the same grains on any layout)"""
+    runs = {prefix + "0": {}}
+    for k in range(1, count):
+        runs["%s%d" % (prefix, k)] = {"perturb": PERTURB, "perturb_seed": k}
     return runs
+
+
+def np2_members():
+    return members("np2_member", NP2_ENSEMBLE)
 
 
 def run_one(work, name, variables, ranks=1, args=(), threads=1):
@@ -190,13 +191,13 @@ def metrics(work, name):
     if not complete(path, CYCLES * PERIOD):
         return None
     c = load(path)
-    per_cycle = fidelity_factors.factor_metrics(c, CYCLES)
-    cycles = fidelity.cycle_metrics(c, True, PERIOD, CYCLES, stuck_until=0.2)
+    per_cycle = factor_metrics(c, CYCLES)
+    cycles = cycle_metrics(c, True, PERIOD, CYCLES, stuck_until=0.2)
     out = {}
     for key, _, _, _ in METRICS:
         if key == "n":
-            pts = fidelity.creep_points(c, cycles=CYCLES)
-            fit = fidelity.power_law(pts[np.isin(pts[:, 2], KEEP)])
+            pts = creep_points(c, cycles=CYCLES)
+            fit = power_law(pts[np.isin(pts[:, 2], KEEP)])
             if fit:
                 out["n"] = fit[0]
             continue
@@ -377,7 +378,8 @@ def plot(ens, bands, rows, work, path):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--part", required=True,
-                    choices=["ensemble", "knobs", "layout", "fast", "table_s1", "report"])
+                    choices=["ensemble", "ensemble_np2", "knobs", "layout", "fast", "table_s1",
+                             "report"])
     ap.add_argument("--work", default="/tmp/pw_time_to_solution")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--only", default="", help="comma-separated run names of the part")
@@ -400,11 +402,12 @@ def main():
         print("\n".join(table_s1(args.work)))
         return None
     specs = {"ensemble": {n: ("", "", v, 1, (), 1) for n, v in members().items()},
+             "ensemble_np2": {n: ("", "", v, 2, (), 1) for n, v in np2_members().items()},
              "knobs": KNOBS, "layout": LAYOUTS, "fast": FAST}[args.part]
     if args.only:
         specs = {n: s for n, s in specs.items() if n in args.only.split(",")}
     # runs on both cores one at a time; 1-rank runs --jobs at a time
-    jobs = 1 if args.part in ("layout", "fast") else args.jobs
+    jobs = 1 if args.part in ("layout", "fast", "ensemble_np2") else args.jobs
     pool = ThreadPoolExecutor(jobs)
     todo = [(n, s) for n, s in specs.items()]
     for name, cpu in pool.map(lambda ns: run_one(args.work, ns[0], ns[1][2], ns[1][3], ns[1][4],

@@ -19,5 +19,7 @@ fi
 if [ -x "$_pw_repo/build-liggghts/bin/liggghts" ]; then
   export PATH="$_pw_repo/build-liggghts/bin:$PATH"
 fi
+# the analysis package (analysis/README.md): python3 -m porewater_analysis RUN_DIR
+export PYTHONPATH="$_pw_repo/analysis${PYTHONPATH:+:$PYTHONPATH}"
 export OMP_PROC_BIND=${OMP_PROC_BIND:-spread} OMP_PLACES=${OMP_PLACES:-threads}
 unset _pw_repo _pw_plugin_dir

@@ -38,7 +38,7 @@ SUDO=""
 
 # ---- 1. system packages -------------------------------------------------------------
 APT_PACKAGES=(build-essential cmake ninja-build ccache pkg-config xz-utils dpkg-dev
-  libopenmpi-dev openmpi-bin googletest libgtest-dev python3 python3-numpy python3-matplotlib)
+  libopenmpi-dev openmpi-bin googletest libgtest-dev python3 python3-numpy python3-scipy python3-matplotlib)
 # LIGGGHTS-PUBLIC 3.8.0 (bookworm: 3.8.0+repack1-9+b2): the library, headers and stock binary
 has_layer liggghts && APT_PACKAGES+=(liggghts libliggghts-dev)
 missing=()

@@ -4,7 +4,12 @@
 #define PW_LAMMPS_COMPAT_H
 
 #include "atom.h"
+#include "compute.h"
+#include "neighbor.h"
 #include "update.h"
+#if !PW_LAMMPS_HAS_ADD_REQUEST
+#include "neigh_request.h"
+#endif
 
 // Grid3d, per-grid data of fixes, dump grid and fix ave/grid: LAMMPS since 22Dec2022 (the
 // GridComm of 29Sep2021 has no such interface); PW_LAMMPS_VERSION_NUMBER comes from CMake
@@ -30,6 +35,25 @@ inline bool has_sphere_attributes(const LAMMPS_NS::Atom *atom)
 inline double simulated_time(const LAMMPS_NS::Update *update, LAMMPS_NS::bigint step)
 {
   return update->atime + (step - update->atimestep) * update->dt;
+}
+
+// An occasional full neighbour list for a compute (built on demand by Neighbor::build_one):
+// Neighbor::add_request and its flags since 2022 (CMake's PW_LAMMPS_HAS_ADD_REQUEST), the
+// request's fields before.
+inline void request_occasional_full_list(LAMMPS_NS::Neighbor *neighbor,
+                                         LAMMPS_NS::Compute *compute, int instance)
+{
+#if PW_LAMMPS_HAS_ADD_REQUEST
+  (void) instance;
+  neighbor->add_request(compute, LAMMPS_NS::NeighConst::REQ_FULL | LAMMPS_NS::NeighConst::REQ_OCCASIONAL);
+#else
+  const int request = neighbor->request(compute, instance);
+  neighbor->requests[request]->pair = 0;
+  neighbor->requests[request]->compute = 1;
+  neighbor->requests[request]->half = 0;
+  neighbor->requests[request]->full = 1;
+  neighbor->requests[request]->occasional = 1;
+#endif
 }
 
 }    // namespace porewater

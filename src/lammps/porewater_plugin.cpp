@@ -10,6 +10,7 @@
 #include "pair.h"
 
 #include "compute.h"
+#include "compute_coordination_original.h"
 #include "compute_darcy_grain.h"
 #include "fix_darcy_pressure.h"
 #include "fix_progress.h"
@@ -150,6 +151,8 @@ extern "C" void porewater_register_styles(void *lmp, void *handle, void *regfunc
       "darcy/pressure", "pore-water pressure on a Darcy grid, force on grains");
   r.add_host_compute<ComputeDarcyGrain>(
       "darcy/grain", "pore pressure and porosity of fix darcy/pressure at each grain");
+  r.add_host_compute<ComputeCoordinationOriginal>(
+      "coordination/original", "coordination number as the original program counts it");
   r.add_host_fix<FixProgress>(
       "progress", "progress of a long run, finish time, wall-time limit");
 }

@@ -113,6 +113,10 @@ STYLES = {
         "@compute dg all darcy/grain fl\n"
         "compute dgs all reduce sum c_dg[1] c_dg[2]\n"
         "thermo_style custom step ke c_dgs[1] c_dgs[2]\n" + RUN),
+    "coordination_original": (
+        SCENE + PAIR + NVE +
+        "@compute zo all coordination/original fixed bottom\n"
+        "thermo_style custom step ke c_zo\n" + RUN),
     "progress": (
         SCENE + PAIR + NVE +
         "@fix prog all progress end 60 period 2.5 walltime 01:00:00 safety 1.5\n"

@@ -12,10 +12,14 @@ Short runs (2 time-series rows, 2,340 steps) of:
   (2 rows: 1,150 steps, as a row is every 25 round(2.5 s / (1000 dt 25)) = 575 steps).
 Each run's fluid cell height, mu_f and plate mass must be those that keep the reduced case's
 groups for its bed's own H and phi (groups.py bed_parameters, to the 4 digits in.params
-gives them: 5e-4), every value finite; the original's bed starts at the original run's
-coordination, 4.58 (shared/spec/original_run_contacts.txt's first row), within 0.1 (it was
-prepared for that: 4.53). `-var bed` with another value stops with an error naming the
-allowed values.
+gives them: 5e-4), every value finite; the original's bed starts, by our count (compute
+contact/atom), within 0.1 of 4.58, the target it was prepared for (4.53: the original run's
+first row, which that run counted by its own rules; by those rules, compute
+coordination/original, the bed starts lower, and no row's count by them may exceed ours,
+whose pairs include theirs). `-var bed` with another value stops with an error naming the
+allowed values. Grain dumps (`-var dump_every`) write positions at full precision (17
+significant digits), and the mean of their per-grain count by the original's rules is the
+time series' coordination_original of that step.
 
 Usage: check_tidal_shear_beds.py --lmp LMP --plugin-dir DIR
 """
@@ -96,11 +100,33 @@ def case(lmp, work, env, name):
               % (key, params[key], height, phi, value))
     if z_start is not None:
         z0 = rows[0][col["coordination"]]
-        check(abs(z0 - z_start) < 0.1, "starts at coordination %.3f (the original: %.2f)" % (z0, z_start))
+        check(abs(z0 - z_start) < 0.1, "starts at coordination %.3f by our count (prepared for "
+              "%.2f in it)" % (z0, z_start))
+    check(all(0 < r[col["coordination_original"]] <= r[col["coordination"]] for r in rows),
+          "the original's count %s within ours %s" % (
+              [r[col["coordination_original"]] for r in rows], [r[col["coordination"]] for r in rows]))
     check(len(rows) == 2 and all(math.isfinite(x) for r in rows for x in r), "2 finite rows")
     if solver == "relaxed":
         check(all(r[col["solver_iters"]] > 0 for r in rows), "relaxed sweeps %s" % (
             [r[col["solver_iters"]] for r in rows]))
+
+
+def dumps(lmp, work, env):
+    """a grain dump of the first time-series row's step: positions at 17 significant digits,
+    the mean of its per-grain original count equal to that row's coordination_original"""
+    print("-- dump_every 1170")
+    out = run(lmp, work, env, ["dump_every", "1170"], "log.dump", 1170)
+    check(out.returncode == 0, "runs (exit %d)" % out.returncode)
+    lines = open(os.path.join(work, "grains_1170.dump")).read().splitlines()
+    names = lines[8].split()[2:]
+    grains = [dict(zip(names, l.split())) for l in lines[9:]]
+    digits = sorted(len(g["x"].lstrip("-").split("e")[0].replace(".", "").lstrip("0"))
+                    for g in grains)[len(grains) // 2]    # the median grain
+    check(digits >= 15, "positions with %d significant digits (the median grain)" % digits)
+    mean = sum(float(g["c_coordination_original"]) for g in grains) / len(grains)
+    row = open(os.path.join(work, "timeseries.txt")).read().splitlines()[1].split()
+    check(abs(mean - float(row[-1])) < 1e-12, "the dump's original count %.6f is the time "
+          "series' %s" % (mean, row[-1]))
 
 
 def main():
@@ -117,6 +143,7 @@ def main():
                    LD_LIBRARY_PATH=args.plugin_dir + ":" + os.environ.get("LD_LIBRARY_PATH", ""))
         for name in CASES:
             case(args.lmp, work, env, name)
+        dumps(args.lmp, work, env)
         print("-- bed packed")
         out = run(args.lmp, work, env, ["bed", "packed"], "log.bad")
         said = out.stdout + open(os.path.join(work, "log.bad")).read()

@@ -1,0 +1,182 @@
+"""The original program's estimators: those of sphere's scripts, which define the paper's numbers
+(Damsgaard et al. 2016), applied to a time series of examples/tidal_shear. Lines cited are
+of sphere at commit 116df3b (github.com/klkkong/sphere, python/ and src/).
+
+Our time series stands for the original's output files: `vx_top` for the fixed top grains'
+x-velocity, `z_wall` for the top wall's position w_x (the floor at z = 0), `N_applied` for
+the defined normal stress, and the tau of the run for the defined shear stress. The original
+data file of the paper's run (bench/original_run_contacts.txt) is read by
+cycles.original_data_file_metrics.
+"""
+import numpy as np
+import scipy.optimize
+
+from .timeseries import whole_cycles
+
+ORIGINAL_PERIOD = 5.0      # s: Table S1's 0.2 Hz; the original scripts' times and rates are in it
+ORIGINAL_CYCLES = 9        # Table S1: 45 s analysed
+FILES_PER_CYCLE = 500      # the original wrote an output file every 0.01 s of its 5 s cycle
+WATER_VISCOSITY = 1.787e-3  # Pa s: t_DEM_to_t_real = mu/1.787e-3 (rate-dependence.py line 71)
+MAX_FRICTION = 0.38        # tau/N of the creep fit (rate-dependence.py line 99)
+MAX_RATE = 0.1             # 1/s over a cycle of ORIGINAL_PERIOD (rate-dependence.py line 100)
+CREEP_PHASES = (0.2, 0.6)  # 1-3 s of each 5 s cycle, open (rate-dependence.py lines 101-111)
+BAND_EXIT_FACTOR = 10.0    # our reading of the slip: v above 10x the cycle's creep band
+
+
+def shear_velocity(vx_top):
+    """sphere.py `shearVelocity()` (python/sphere.py lines 4794-4808): numpy.max(vel[fixvel, 0])
+    over ALL fixed grains (`shear()` lines 3131-3158 fix both the bottom and the top layer,
+    fixvel = 1). The held bottom layer's x-velocity is exactly 0 and the top layer moves as
+    one plate, so the maximum is max(vx_top, 0), elementwise."""
+    return np.maximum(vx_top, 0.0)
+
+
+def shear_strain_rate(vx_top, z_wall):
+    """sphere.py `shearStrainRate()` (python/sphere.py lines 4837-4853): shearVelocity()/w_x[0],
+    w_x the top wall's height above the floor at z = 0 (our z_wall)"""
+    return shear_velocity(vx_top) / z_wall
+
+
+def original_samples(series, period):
+    """the rows of the time series at the original's sampling: it wrote an output file every
+    0.01 s of its 5 s cycle (period/500) and read them from the first on, never the initial
+    state (rate-dependence.py line 70, readstep(i+1)). Our rows stand at t = k nout dt,
+    k = 1, 2, ..., ~1000 per cycle (in.tidal_shear `samples`): every second row (k even;
+    generally k a multiple of the stride nearest to period/500 over the rows' spacing) is
+    spaced period/500"""
+    t = series["time"]
+    spacing = np.median(np.diff(t))
+    stride = max(1, int(round(period / FILES_PER_CYCLE / spacing)))
+    keep = (np.rint(t / spacing).astype(int) % stride == 0) & (t > 0)
+    return {name: column[keep] for name, column in series.items()}
+
+
+def creep_rheology2(friction, n, A):
+    """python/halfshear-darcy-rate-dependence.py lines 47-49: the strain rate of tau/N"""
+    return A * friction ** n
+
+
+def creep_samples(series, period, tau, rate_scale=1.0):
+    """every original sample (original_samples) with its time, cycle, tau/N, scaled rate, and
+    whether the creep fit keeps it (python/halfshear-darcy-rate-dependence.py lines 69-111):
+    tau the DEFINED shear stress (line 73, w_tau_x), N the DEFINED normal stress (line 75,
+    currentNormalStress() 'defined', python/sphere.py lines 4121-4140: sigma0 + A sin(2 pi f t),
+    our N_applied), rate shearStrainRate() * t_DEM_to_t_real (line 77; rate_scale =
+    mu_f/1.787e-3, line 71). Kept: a nonzero rate (line 88, numpy.nonzero), then
+    (lines 99-111) tau/N < 0.38, rate < 0.1 * t_DEM_to_t_real, and t inside 1-3 s of a 5 s
+    cycle: (6, 8), (11, 13), ... from the second cycle on (the caller picks the cycles), here
+    0.2 < phase < 0.6 of our period. The rate threshold is the unscaled rate < 0.1 1/s over
+    Table S1's 5 s cycle; our reduced case runs the cycle in `period` (2.5 s), its rates
+    larger by ORIGINAL_PERIOD/period for the same strain per cycle, so the threshold is
+    0.1 * ORIGINAL_PERIOD/period 1/s unscaled (rate * period < 0.5)."""
+    s = original_samples(series, period)
+    t = s["time"]
+    cycle = np.floor(t / period).astype(int) + 1
+    start = (cycle - 1) * period
+    friction = tau / s["N_applied"]
+    rate = shear_strain_rate(s["vx_top"], s["z_wall"]) * rate_scale
+    kept = (rate != 0) & (friction < MAX_FRICTION) & \
+        (rate < MAX_RATE * ORIGINAL_PERIOD / period * rate_scale) & \
+        (t > start + CREEP_PHASES[0] * period) & (t < start + CREEP_PHASES[1] * period)
+    return {"time": t, "cycle": cycle, "friction": friction, "rate": rate, "kept": kept}
+
+
+def creep_fit(series, period, tau, rate_scale=1.0, first_cycle=2, last_cycle=None):
+    """the original's creep exponent (python/halfshear-darcy-rate-dependence.py lines 69-120):
+    scipy.optimize.curve_fit(creep_rheology2, tau/N, rate) as lines 118-120, the default p0,
+    in linear space, on the samples of cycles first_cycle..last_cycle (all from the second by
+    default, as lines 101-111) that creep_samples keeps. Returns {n, A, n_sigma, A_sigma (1
+    sigma: sqrt of pcov's diagonal), count, time, friction, rate (the samples fitted)}; n, A
+    and their sigmas are nan for fewer than 3 samples or a fit that does not converge."""
+    p = creep_samples(series, period, tau, rate_scale)
+    use = p["kept"] & (p["cycle"] >= first_cycle)
+    if last_cycle is not None:
+        use &= p["cycle"] <= last_cycle
+    out = {"count": int(use.sum()), "time": p["time"][use], "friction": p["friction"][use],
+           "rate": p["rate"][use], "n": np.nan, "A": np.nan, "n_sigma": np.nan,
+           "A_sigma": np.nan}
+    if out["count"] < 3:
+        return out
+    try:
+        popt, pcov = scipy.optimize.curve_fit(creep_rheology2, out["friction"], out["rate"])
+    except RuntimeError:            # no convergence from the default p0
+        return out
+    sigma = np.sqrt(np.diag(pcov))
+    out.update(n=popt[0], A=popt[1], n_sigma=sigma[0], A_sigma=sigma[1])
+    return out
+
+
+def creep_fit_per_cycle(series, period, tau, rate_scale=1.0):
+    """creep_fit of each whole cycle alone, the first included: the commented-out block of
+    python/halfshear-darcy-rate-dependence.py lines 136-253 (fits of 1-3 s, 6-8 s, ... at
+    lines 137-220). That block compares the scaled rate with 0.1, without line 100's factor
+    t_DEM_to_t_real (with the paper's 5.8e-5, a threshold that keeps every creeping sample);
+    here the pooled fit's conditions, so that the cycles' samples are the pooled ones"""
+    return [dict(creep_fit(series, period, tau, rate_scale, k, k), cycle=k)
+            for k in range(1, whole_cycles(series["time"], period) + 1)]
+
+
+def stick(series, period, tau):
+    """per whole cycle, the original's stick (python/halfshear-darcy-combined.py lines 235-241:
+    shaded where numpy.isclose(v, 0.0), v = shearVelocity(), line 103; numpy's defaults atol
+    1e-8, rtol 1e-5, i.e. max(vx_top, 0) <= 1e-8 m/s) on the original's samples:
+    stick_fraction, the fraction of the cycle's samples stuck; stick_intervals, (start, end)
+    phases of each run of stuck samples, first to last sample as span_where shades them.
+    OUR reading of that figure (not the original's): the layer leaves and regains the creep
+    band. band: the largest v among the cycle's creep-fit samples (creep_samples kept,
+    rate_scale 1: the conditions do not depend on it); exit_onset: the first phase > 0.6
+    with v > BAND_EXIT_FACTOR * band; exit_end: the first phase after it with v < band, 1.0
+    if v stays above to the cycle's end. None where the cycle has no creep-fit sample or v
+    never leaves the band."""
+    s = original_samples(series, period)
+    t, v = s["time"], shear_velocity(s["vx_top"])
+    stuck = np.isclose(v, 0.0)
+    kept = creep_samples(series, period, tau)["kept"]
+    rows = []
+    for k in range(1, whole_cycles(series["time"], period) + 1):
+        inside = (t >= (k - 1) * period) & (t < k * period)
+        phase, vi, si = t[inside] / period - (k - 1), v[inside], stuck[inside]
+        edges = np.diff(np.concatenate([[0], si.astype(int), [0]]))
+        starts, ends = np.nonzero(edges == 1)[0], np.nonzero(edges == -1)[0] - 1
+        r = {"cycle": k, "stick_fraction": float(si.mean()) if len(si) else np.nan,
+             "stick_intervals": [(phase[a], phase[b]) for a, b in zip(starts, ends)],
+             "band": None, "exit_onset": None, "exit_end": None}
+        creeping = vi[kept[inside]]
+        if len(creeping):
+            r["band"] = creeping.max()
+            out = np.nonzero((phase > CREEP_PHASES[1]) & (vi > BAND_EXIT_FACTOR * r["band"]))[0]
+            if len(out):
+                back = out[0] + np.nonzero(vi[out[0]:] < r["band"])[0]
+                r["exit_onset"] = phase[out[0]]
+                r["exit_end"] = phase[back[0]] if len(back) else 1.0
+        rows.append(r)
+    return rows
+
+
+def coordination(series, period):
+    """per whole cycle, on the original's samples: the mean coordination over phases 0.2-0.6
+    (creeping) and its minimum with its phase, of the original's count (column
+    coordination_original; None where a run predates it) and of ours (coordination).
+    The original's count: src/sphere.cpp DEM::findOverlaps (lines 677-725) takes every pair
+    i < j, the raw difference x_j - x_i (no periodic image), an overlap delta_n < 0, counted
+    only if BOTH grains have fixvel == 0 (line 712: neither grain is fixed; its comment says
+    "both"); python/sphere.py findCoordinationNumber (lines 4885-4894) adds 1 to each grain
+    of a pair, findMeanCoordinationNumber (lines 4896-4904) the mean over ALL grains, the
+    fixed ones counting zero; called by python/halfshear-darcy-combined.py lines 130-131."""
+    s = original_samples(series, period)
+    t = s["time"]
+    rows = []
+    for k in range(1, whole_cycles(series["time"], period) + 1):
+        inside = (t >= (k - 1) * period) & (t < k * period)
+        phase = t[inside] / period - (k - 1)
+        creeping = (phase > CREEP_PHASES[0]) & (phase < CREEP_PHASES[1])
+        r = {"cycle": k}
+        for key, column in (("original", "coordination_original"), ("ours", "coordination")):
+            if column not in s:
+                r[key] = None
+                continue
+            z = s[column][inside]
+            i = int(np.argmin(z))
+            r[key] = {"creep": float(np.mean(z[creeping])), "min": z[i], "min_phase": phase[i]}
+        rows.append(r)
+    return rows
