@@ -33,7 +33,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 # key, label, scale, format: ours (porewater_analysis.cycles) as the knobs are judged by, and
 # the coordination while creeping; the original's (porewater_analysis.original)
-OURS = METRICS_OF_KNOBS + [("z_creep", "Z creeping, our count", 1.0, "%.2f")]
+OURS = METRICS_OF_KNOBS + [("z_creep", "Z creeping, our count", 1.0, "%.2f"),
+                          ("z_min_after", "min Z of our count: cycles after the minimum of N",
+                           1.0, "%.3f")]
 ORIGINAL = [
     ("n_original", "n, the original's fit (curve_fit)", 1.0, "%.2f"),
     ("z_creep_original", "Z creeping, the original's count", 1.0, "%.2f"),
@@ -61,9 +63,11 @@ def run_metrics(work, name):
     kept = [c for c in result["cycles"] if c["cycle"] in KEEP]
     ours = [c["ours"] for c in kept]
     original = [dict(c["original"]) for c in kept]
-    out = {key: mean_over_kept(ours, key) for key, _, _, _ in OURS if key != "n"}
-    for row in original:    # a collapse in the landing just past the cycle's end stays next
-        row["z_min_after"] = after_min_n(row["z_min_phase"])    # to one just before it
+    ours = [dict(row) for row in ours]
+    out = {}
+    for row in ours + original:    # a collapse in the landing just past the cycle's end
+        row["z_min_after"] = after_min_n(row["z_min_phase"])    # stays next to one before it
+    out.update({key: mean_over_kept(ours, key) for key, _, _, _ in OURS if key != "n"})
     out.update({key: mean_over_kept(original, key.replace("_original", ""))
                 for key, _, _, _ in ORIGINAL if key.endswith("_original") and key != "n_original"})
     out.update({key: mean_over_kept(original, key) for key in ("stick_fraction", "exit_onset",
@@ -133,6 +137,44 @@ def layout_comparison(one, two):
     return lines
 
 
+# the paper's and the original data file's values (bench/RESULTS_fidelity.md says where from),
+# and the metrics of both estimators that compare with each: label, reference, ours, original's
+AGAINST_PAPER = [
+    ("creep exponent n, cycles 2-4 pooled", "6-11 (the paper, by the original's fit)", "n",
+     "n_original"),
+    ("coordination while creeping (phases 0.2-0.6)", "3.49 (3.47-3.51; the original's data file, "
+     "cycles 2-9)", "z_creep", "z_creep_original"),
+    ("minimum coordination of a cycle", "0.044 (0.036-0.052)", "z_min", "z_min_original"),
+    ("its time: cycles after the minimum of N", "0.264 (median)", "z_min_after",
+     "z_min_after_original"),
+    ("slip onset (phase): ours 1 cm/s; the original's velocity leaves its creep band",
+     "~0.61 (its Figure 3)", "onset", "exit_onset"),
+    ("slip end (phase)", "~0.81 (its Figure 3)", "end", "exit_end"),
+    ("stick: share of the cycle with the original's velocity 0", "(shaded, no number)", None,
+     "stick_fraction"),
+]
+
+
+def against_paper(one):
+    """mean ± the 95 % prediction band of the 1-rank ensemble, by each estimator"""
+    spec = {k: (scale, f) for k, _, scale, f in METRICS}
+
+    def stat(key):
+        if key is None:
+            return ""
+        v = summary(one, key)
+        if len(v) < 3:
+            return "none"
+        mean, half = band(v)
+        scale, f = spec[key]
+        return "%s ± %s" % (f % (scale * mean), f % (scale * half))
+    lines = ["| | paper / the original's data file | ours, our estimator | ours, the original's "
+             "estimator |", "|---|---|---|---|"]
+    lines += ["| %s | %s | %s | %s |" % (label, ref, stat(a), stat(b))
+              for label, ref, a, b in AGAINST_PAPER]
+    return lines
+
+
 def costs(work, names, column, label):
     c = [read_cost(os.path.join(work, n)) for n in names]
     c = [x for x in c if x]
@@ -181,6 +223,8 @@ def report(work):
                  commit, work, CYCLES, KEEP[0], KEEP[-1]), ""]
     lines += costs(work, one, 0, "1 rank (two runs side by side)")
     lines += costs(work, two, 1, "2 ranks (%s processor grid, alone on the machine)" % ", ".join(grids))
+    lines += ["", "## Against the paper (1 rank: mean ± 95 % prediction band)", ""]
+    lines += against_paper(one)
     lines += [""] + ensemble_table("1 rank: %d members" % len(one), one) + [""]
     lines += ensemble_table("2 ranks: %d members" % len(two), two) + [""]
     lines += ["## 2 ranks against 1 rank", ""] + layout_comparison(one, two)
