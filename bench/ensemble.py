@@ -11,14 +11,20 @@ prediction band of one more run. 2 ranks against 1 rank: the difference of the m
 interval (Welch), and whether it is outside that interval family-wise (Bonferroni over the
 metrics compared).
 
-Usage (after the runs; source scripts/env.sh not needed):
-    /usr/bin/python3 bench/ensemble.py [--work DIR]
+The other cases of bench/RESULTS_fidelity.md (CASES: the frictionless bed, the original
+preset, the low-permeability twin), CASE_MEMBERS members each on 1 rank, by `--run CASE`, two
+side by side; their table beside the default's in the report.
+
+Usage (source scripts/env.sh first for --run):
+    /usr/bin/python3 bench/ensemble.py [--work DIR] [--run CASE [--members K]]
 writes bench/ensemble_results.md and bench/ensemble.png.
 """
 import argparse
+import glob
 import os
 import re
 import subprocess
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 from scipy import stats
@@ -26,7 +32,8 @@ from scipy import stats
 from example_runs import complete, read_cost
 from porewater_analysis.cycles import after_min_n
 from porewater_analysis.report import analyse_run
-from time_to_solution import CYCLES, KEEP, PERIOD, band, members, np2_members
+from time_to_solution import (CYCLES, KEEP, PERIOD, band, freeze_plugin, members, np2_members,
+                              run_one)
 from time_to_solution import METRICS as METRICS_OF_KNOBS
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -47,6 +54,53 @@ ORIGINAL = [
     ("exit_end", "velocity back in the band (phase)", 1.0, "%.3f"),
 ]
 METRICS = OURS + ORIGINAL
+
+# the cases of bench/RESULTS_fidelity.md beside the default: in.tidal_shear -var overrides
+CASES = {
+    "frictionless": ("the frictionless bed (the former default)", {"bed": "frictionless"}),
+    "original": ("the original preset (-var original 1)", {"original": 1}),
+    "twin": ("the low-permeability twin (k_c 3.5e-15)", {"kc": 3.5e-15}),
+}
+CASE_MEMBERS = 4
+# the metrics of the cases' table
+CASE_METRICS = ["n", "n_original", "z_creep", "z_creep_original", "z_min", "z_min_original",
+                "onset", "exit_onset", "end", "exit_end", "stick_fraction", "slip"]
+
+
+def case_members(case, count=CASE_MEMBERS):
+    """name: -var overrides of a case's runs, perturbed as the default's members"""
+    return {"%s_%s" % (case, name): dict(CASES[case][1], **variables)
+            for name, variables in members("member", count).items()}
+
+
+def run_case(work, case, count, jobs=2):
+    freeze_plugin(work, case)
+    pool = ThreadPoolExecutor(jobs)
+    for name, cpu in pool.map(lambda nv: run_one(work, *nv), case_members(case, count).items()):
+        print("%s: %s" % (name, "done before" if cpu is None else "%.0f s CPU" % cpu), flush=True)
+
+
+def cases_table(work, default):
+    """a row per case with runs in work: mean ± the 95 % band (3 runs or more), or the mean of
+    its runs"""
+    spec = {k: (label, scale, f) for k, label, scale, f in METRICS}
+    lines = ["| case (runs) | " + " | ".join(spec[k][0] for k in CASE_METRICS) + " |",
+             "|---|" + "---|" * len(CASE_METRICS)]
+    ensembles = [("the default (1 rank)", default)]
+    for case, (label, _) in CASES.items():
+        names = sorted(os.path.basename(d) for d in glob.glob(os.path.join(work, case + "_member*")))
+        runs = {n: run_metrics(work, n) for n in names}    # however many --members ran
+        ensembles.append((label, {n: m for n, m in runs.items() if m}))
+    for label, ens in ensembles:
+        if not ens:
+            continue
+        cells = []
+        for key in CASE_METRICS:
+            v, (_, scale, f) = summary(ens, key), spec[key]
+            cells.append("none" if not len(v) else (f % (scale * v.mean())) + (
+                " ± " + f % (scale * band(v)[1]) if len(v) >= 3 else ""))
+        lines.append("| %s (%d) | %s |" % (label, len(ens), " | ".join(cells)))
+    return lines
 
 
 def mean_over_kept(rows, key):
@@ -228,6 +282,7 @@ def report(work):
     lines += [""] + ensemble_table("1 rank: %d members" % len(one), one) + [""]
     lines += ensemble_table("2 ranks: %d members" % len(two), two) + [""]
     lines += ["## 2 ranks against 1 rank", ""] + layout_comparison(one, two)
+    lines += ["", "## The cases, by both estimators", ""] + cases_table(work, one)
     plot(one, two, os.path.join(HERE, "ensemble.png"))
     lines += ["", "![each member by layout; squares: mean and sd](ensemble.png)"]
     open(os.path.join(HERE, "ensemble_results.md"), "w").write("\n".join(lines) + "\n")
@@ -237,7 +292,12 @@ def report(work):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--work", default="/tmp/pw_time_to_solution")
-    report(ap.parse_args().work)
+    ap.add_argument("--run", choices=sorted(CASES), help="run a case's members (then report)")
+    ap.add_argument("--members", type=int, default=CASE_MEMBERS)
+    args = ap.parse_args()
+    if args.run:
+        run_case(args.work, args.run, args.members)
+    report(args.work)
 
 
 if __name__ == "__main__":

@@ -375,6 +375,22 @@ def plot(ens, bands, rows, work, path):
     fig.savefig(path, dpi=80)
 
 
+def freeze_plugin(work, part):
+    """the runs of this process load a copy of the plugin taken now (work/plugin_PART): a
+    rebuild meanwhile does not touch them"""
+    frozen = os.path.join(work, "plugin_" + part)
+    os.makedirs(frozen, exist_ok=True)
+    for path in os.environ.get("LD_LIBRARY_PATH", "").split(":"):
+        if os.path.exists(os.path.join(path, "porewater.so")):
+            for so in ("porewater.so", "porewater_styles.so"):    # a new file: runs of an
+                shutil.copy(os.path.join(path, so), os.path.join(frozen, so + ".new"))  # earlier
+                os.replace(os.path.join(frozen, so + ".new"), os.path.join(frozen, so))  # call keep theirs
+            break
+    else:
+        sys.exit("no porewater.so on LD_LIBRARY_PATH: source scripts/env.sh first")
+    os.environ["LD_LIBRARY_PATH"] = frozen + ":" + os.environ["LD_LIBRARY_PATH"]
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--part", required=True,
@@ -386,18 +402,7 @@ def main():
     args = ap.parse_args()
     if args.part == "report":
         return report(args.work)
-    # the runs load a copy of the plugin taken now: a rebuild meanwhile does not touch them
-    frozen = os.path.join(args.work, "plugin_" + args.part)
-    os.makedirs(frozen, exist_ok=True)
-    for path in os.environ.get("LD_LIBRARY_PATH", "").split(":"):
-        if os.path.exists(os.path.join(path, "porewater.so")):
-            for so in ("porewater.so", "porewater_styles.so"):    # a new file: runs of an
-                shutil.copy(os.path.join(path, so), os.path.join(frozen, so + ".new"))  # earlier
-                os.replace(os.path.join(frozen, so + ".new"), os.path.join(frozen, so))  # call keep theirs
-            break
-    else:
-        sys.exit("no porewater.so on LD_LIBRARY_PATH: source scripts/env.sh first")
-    os.environ["LD_LIBRARY_PATH"] = frozen + ":" + os.environ["LD_LIBRARY_PATH"]
+    freeze_plugin(args.work, args.part)
     if args.part == "table_s1":
         print("\n".join(table_s1(args.work)))
         return None
