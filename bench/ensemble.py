@@ -83,8 +83,8 @@ def run_case(work, case, count, jobs=2):
 def cases_table(work, default):
     """a row per case with runs in work: mean ± the 95 % band (3 runs or more), or the mean of
     its runs"""
-    spec = {k: (label, scale, f) for k, label, scale, f in METRICS}
-    lines = ["| case (runs) | " + " | ".join(spec[k][0] for k in CASE_METRICS) + " |",
+    labels = {k: label for k, label, _, _ in METRICS}
+    lines = ["| case (runs) | " + " | ".join(labels[k] for k in CASE_METRICS) + " |",
              "|---|" + "---|" * len(CASE_METRICS)]
     ensembles = [("the default (1 rank)", default)]
     for case, (label, _) in CASES.items():
@@ -92,14 +92,9 @@ def cases_table(work, default):
         runs = {n: run_metrics(work, n) for n in names}    # however many --members ran
         ensembles.append((label, {n: m for n, m in runs.items() if m}))
     for label, ens in ensembles:
-        if not ens:
-            continue
-        cells = []
-        for key in CASE_METRICS:
-            v, (_, scale, f) = summary(ens, key), spec[key]
-            cells.append("none" if not len(v) else (f % (scale * v.mean())) + (
-                " ± " + f % (scale * band(v)[1]) if len(v) >= 3 else ""))
-        lines.append("| %s (%d) | %s |" % (label, len(ens), " | ".join(cells)))
+        if ens:
+            lines.append("| %s (%d) | %s |" % (label, len(ens), " | ".join(
+                mean_band(ens, key) for key in CASE_METRICS)))
     return lines
 
 
@@ -209,23 +204,22 @@ AGAINST_PAPER = [
 ]
 
 
+def mean_band(ens, key):
+    """a metric of an ensemble as a cell: mean ± the 95 % prediction band (3 runs or more),
+    the mean of fewer, "none" without any"""
+    scale, f = {k: (scale, f) for k, _, scale, f in METRICS}[key]
+    v = summary(ens, key)
+    if not len(v):
+        return "none"
+    return f % (scale * v.mean()) + (" ± " + f % (scale * band(v)[1]) if len(v) >= 3 else "")
+
+
 def against_paper(one):
     """mean ± the 95 % prediction band of the 1-rank ensemble, by each estimator"""
-    spec = {k: (scale, f) for k, _, scale, f in METRICS}
-
-    def stat(key):
-        if key is None:
-            return ""
-        v = summary(one, key)
-        if len(v) < 3:
-            return "none"
-        mean, half = band(v)
-        scale, f = spec[key]
-        return "%s ± %s" % (f % (scale * mean), f % (scale * half))
     lines = ["| | paper / the original's data file | ours, our estimator | ours, the original's "
              "estimator |", "|---|---|---|---|"]
-    lines += ["| %s | %s | %s | %s |" % (label, ref, stat(a), stat(b))
-              for label, ref, a, b in AGAINST_PAPER]
+    lines += ["| %s | %s | %s | %s |" % (label, ref, mean_band(one, a) if a else "",
+                                         mean_band(one, b)) for label, ref, a, b in AGAINST_PAPER]
     return lines
 
 
