@@ -64,7 +64,8 @@ CASES = {
 CASE_MEMBERS = 4
 # the metrics of the cases' table
 CASE_METRICS = ["n", "n_original", "z_creep", "z_creep_original", "z_min", "z_min_original",
-                "onset", "exit_onset", "end", "exit_end", "stick_fraction", "slip"]
+                "z_min_after", "z_min_after_original", "onset", "exit_onset", "end", "exit_end",
+                "stick_fraction", "slip"]
 
 
 def case_members(case, count=CASE_MEMBERS):
@@ -81,20 +82,27 @@ def run_case(work, case, count, jobs=2):
 
 
 def cases_table(work, default):
-    """a row per case with runs in work: mean ± the 95 % band (3 runs or more), or the mean of
-    its runs"""
+    """a row per metric, a column per case with runs in work: mean ± the 95 % band (3 runs or
+    more), or the mean of its runs; the paper's or the original data file's value beside"""
     labels = {k: label for k, label, _, _ in METRICS}
-    lines = ["| case (runs) | " + " | ".join(labels[k] for k in CASE_METRICS) + " |",
-             "|---|" + "---|" * len(CASE_METRICS)]
-    ensembles = [("the default (1 rank)", default)]
+    reference = {}
+    for _, ref, ours, original in AGAINST_PAPER:
+        reference.update({k: ref for k in (ours, original) if k})
+    ensembles = [("the default", default)]
     for case, (label, _) in CASES.items():
         names = sorted(os.path.basename(d) for d in glob.glob(os.path.join(work, case + "_member*")))
         runs = {n: run_metrics(work, n) for n in names}    # however many --members ran
         ensembles.append((label, {n: m for n, m in runs.items() if m}))
-    for label, ens in ensembles:
-        if ens:
-            lines.append("| %s (%d) | %s |" % (label, len(ens), " | ".join(
-                mean_band(ens, key) for key in CASE_METRICS)))
+    ensembles = [(label, ens) for label, ens in ensembles if ens]
+    lines = ["| metric | paper / the original's data file | " + " | ".join(
+        "%s (%d runs)" % (label, len(ens)) for label, ens in ensembles) + " |",
+        "|---|---|" + "---|" * len(ensembles)]
+    for key in CASE_METRICS:
+        lines.append("| %s | %s | %s |" % (labels[key], reference.get(key, ""), " | ".join(
+            mean_band(ens, key) for _, ens in ensembles)))
+    lines.append("")
+    for label, ens in ensembles[1:]:
+        lines += costs(work, ens, 0, "%s, 1 rank (two runs side by side)" % label)
     return lines
 
 
