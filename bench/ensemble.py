@@ -83,11 +83,10 @@ def run_case(work, case, count, jobs=2):
 
 def cases_table(work, default):
     """a row per metric, a column per case with runs in work: mean ± the 95 % band (3 runs or
-    more), or the mean of its runs; the paper's or the original data file's value beside"""
+    more), or the mean of its runs; the paper's or the original data file's value beside the
+    original's estimator only (ours is not its definition)"""
     labels = {k: label for k, label, _, _ in METRICS}
-    reference = {}
-    for _, ref, ours, original in AGAINST_PAPER:
-        reference.update({k: ref for k in (ours, original) if k})
+    reference = {original: ref for _, ref, _, original in AGAINST_PAPER}
     ensembles = [("the default", default)]
     for case, (label, _) in CASES.items():
         names = sorted(os.path.basename(d) for d in glob.glob(os.path.join(work, case + "_member*")))
@@ -118,13 +117,11 @@ def run_metrics(work, name):
         return None
     result = analyse_run(d, cycles=CYCLES)
     kept = [c for c in result["cycles"] if c["cycle"] in KEEP]
-    ours = [c["ours"] for c in kept]
+    ours = [dict(c["ours"]) for c in kept]
     original = [dict(c["original"]) for c in kept]
-    ours = [dict(row) for row in ours]
-    out = {}
     for row in ours + original:    # a collapse in the landing just past the cycle's end
         row["z_min_after"] = after_min_n(row["z_min_phase"])    # stays next to one before it
-    out.update({key: mean_over_kept(ours, key) for key, _, _, _ in OURS if key != "n"})
+    out = {key: mean_over_kept(ours, key) for key, _, _, _ in OURS if key != "n"}
     out.update({key: mean_over_kept(original, key.replace("_original", ""))
                 for key, _, _, _ in ORIGINAL if key.endswith("_original") and key != "n_original"})
     out.update({key: mean_over_kept(original, key) for key in ("stick_fraction", "exit_onset",
