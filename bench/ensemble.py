@@ -23,13 +23,12 @@ import argparse
 import glob
 import os
 import re
-import subprocess
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 from scipy import stats
 
-from example_runs import complete, read_cost
+from example_runs import complete, head_commit, read_cost
 from porewater_analysis.cycles import after_min_n
 from porewater_analysis.report import analyse_run
 from time_to_solution import (CYCLES, KEEP, PERIOD, band, freeze_plugin, members, np2_members,
@@ -42,6 +41,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 # the coordination while creeping; the original's (porewater_analysis.original)
 OURS = METRICS_OF_KNOBS + [("z_creep", "Z creeping, our count", 1.0, "%.2f"),
                           ("z_min_after", "min Z of our count: cycles after the minimum of N",
+                           1.0, "%.3f"),
+                          ("suction_top", "suction in slip under the plate (A; top fluid layer)",
                            1.0, "%.3f")]
 ORIGINAL = [
     ("n_original", "n, the original's fit (curve_fit)", 1.0, "%.2f"),
@@ -265,8 +266,7 @@ def report(work):
     two = {n: run_metrics(work, n) for n in np2_members()}
     one = {n: m for n, m in one.items() if m}
     two = {n: m for n, m in two.items() if m}
-    commit = subprocess.run(["git", "-C", HERE, "rev-parse", "--short", "HEAD"],
-                            capture_output=True, text=True).stdout.strip()
+    commit = head_commit()
     grids = sorted({processor_grid(work, n) for n in two})
     lines = ["# The ensembles by both estimators: bench/ensemble.py", "",
              "Tables written at commit %s from the runs in `%s` (examples/tidal_shear, %d cycles "

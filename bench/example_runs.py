@@ -79,6 +79,12 @@ def loop_time(log, last=True):
     return sum(float(f[0]) for f in found), sum(int(f[1]) for f in found)
 
 
+def head_commit():
+    """the short hash of the commit the benchmarks run from (their results pages name it)"""
+    return subprocess.run(["git", "-C", HERE, "rev-parse", "--short", "HEAD"],
+                          capture_output=True, text=True).stdout.strip()
+
+
 def prepare(workdir, extra=()):
     os.makedirs(workdir, exist_ok=True)
     for name in os.listdir(EXAMPLE):

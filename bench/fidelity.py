@@ -38,7 +38,6 @@ any run (examples/tidal_shear/in.params). Each part writes bench/fidelity_<part>
 """
 import argparse
 import os
-import subprocess
 import sys
 from concurrent.futures import ThreadPoolExecutor
 
@@ -47,7 +46,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from example_runs import FRICTIONLESS, complete, load, prepare, read_cost, timed_run
+from example_runs import FRICTIONLESS, complete, head_commit, load, prepare, read_cost, timed_run
 import fidelity_factors
 import fidelity_full
 import fidelity_stress
@@ -272,8 +271,7 @@ def load_cycles(work):
 
 
 def header(part, costs):
-    commit = subprocess.run(["git", "-C", HERE, "rev-parse", "--short", "HEAD"],
-                            capture_output=True, text=True).stdout.strip()
+    commit = head_commit()
     lines = ["# Measured by bench/fidelity.py --part %s" % part, "",
              "`/usr/bin/python3 bench/fidelity.py --part %s`, tables written at commit %s from the runs "
              "in --work, on the 2-core "

@@ -37,14 +37,13 @@ Runs complete in --work are not repeated.
 import argparse
 import os
 import shutil
-import subprocess
 import sys
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 from scipy import stats
 
-from example_runs import complete, load, loop_time, prepare, read_cost, timed_run
+from example_runs import complete, head_commit, load, loop_time, prepare, read_cost, timed_run
 import fidelity_full
 from porewater_analysis.cycles import creep_points, cycle_metrics, factor_metrics, power_law
 from porewater_analysis.timeseries import run_parameters
@@ -257,8 +256,7 @@ def report(work):
     if len(ens) < 3:
         sys.exit("the ensemble needs at least 3 complete runs in %s" % work)
     bands = bands_of(ens)
-    commit = subprocess.run(["git", "-C", HERE, "rev-parse", "--short", "HEAD"],
-                            capture_output=True, text=True).stdout.strip()
+    commit = head_commit()
     lines = ["# Time to solution: bench/time_to_solution.py", "",
              "Tables written at commit %s from the runs in `%s` (examples/tidal_shear, %d cycles "
              "each; metrics averaged over cycles %s, n pooled over their creep windows)." % (

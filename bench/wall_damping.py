@@ -27,7 +27,6 @@ complete in --work is not repeated.
 """
 import argparse
 import os
-import subprocess
 import sys
 
 import matplotlib
@@ -36,7 +35,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from scipy.signal import hilbert
 
-from example_runs import FRICTIONLESS, complete, load, prepare, run_lmp, time_step
+from example_runs import FRICTIONLESS, complete, head_commit, load, prepare, run_lmp, time_step
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 A, SIGMA0, T_CYCLE, DT = 70e3, 80e3, 2.5, time_step(1.16e7)
@@ -171,8 +170,7 @@ def main():
 
 
 def report(rings, cycles):
-    commit = subprocess.run(["git", "-C", HERE, "rev-parse", "--short", "HEAD"],
-                            capture_output=True, text=True).stdout.strip()
+    commit = head_commit()
     lines = ["# The plate after a slip: ringing and wall damping (bench/wall_damping.py)", "",
              "`/usr/bin/python3 bench/wall_damping.py --part all` (after scripts/setup.sh; "
              "source scripts/env.sh), written at commit %s on the 2-core development machine, "

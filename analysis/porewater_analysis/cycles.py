@@ -150,6 +150,8 @@ def factor_metrics(c, cycles, period=PERIOD, tau=TAU, amp=AMP):
         if "onset" in r:
             slip = phase_mask(t, period, k, r["onset"], r["end"] + 1e-9)
             r["suction"] = np.min((c["p_mean"] - c["p_top"])[slip]) / amp
+            if "p_top_layer" in c:    # right under the drained face (f_darcy[13])
+                r["suction_top"] = np.min((c["p_top_layer"] - c["p_top"])[slip]) / amp
             # only where the run covers the whole window (a slip to the cycle's end: none)
             if t[-1] >= (k - 1 + r["end"] + LANDING) * period - 1e-9:
                 land = phase_mask(t, period, k, r["end"], r["end"] + LANDING)

@@ -124,9 +124,11 @@ def dumps(lmp, work, env):
                     for g in grains)[len(grains) // 2]    # the median grain
     check(digits >= 15, "positions with %d significant digits (the median grain)" % digits)
     mean = sum(float(g["c_coordination_original"]) for g in grains) / len(grains)
-    row = open(os.path.join(work, "timeseries.txt")).read().splitlines()[1].split()
-    check(abs(mean - float(row[-1])) < 1e-12, "the dump's original count %.6f is the time "
-          "series' %s" % (mean, row[-1]))
+    header, row = (l.lstrip("#").split() for l in
+                   open(os.path.join(work, "timeseries.txt")).read().splitlines()[:2])
+    series = row[header.index("coordination_original")]
+    check(abs(mean - float(series)) < 1e-12, "the dump's original count %.6f is the time "
+          "series' %s" % (mean, series))
 
 
 def main():

@@ -211,6 +211,7 @@ TEST(FixDarcyPressure, ZtopVariableMovesTheTopConditionAndVtkHoldsTheGrid)
     if (k < 6) mean += expected / 12;
   }
   EXPECT_NEAR(l.equal("f_fl[1]"), mean, 1e-10);    // mean p of the active cells
+  EXPECT_NEAR(l.equal("f_fl[13]"), 1.0 - 0.55 / 0.6, 1e-10);    // the top active layer's
   // the VTK file of step 400 carries the same pressures (printed to 16 digits)
   const std::string path = prefix + "_400.vtk";
   std::ifstream in(path);

@@ -387,6 +387,13 @@ double DarcyFluid::vector(int n) const
       return balance.allowance;
     case 11:
       return solver_->active_layers();
+    case 12: {    // the topmost active layer: the cells right under the drained face
+      if (active == 0) return 0.0;
+      const int layer = grid_.geom.nx * grid_.geom.ny;
+      double sum = 0.0;
+      for (int c = active - layer; c < active; ++c) sum += p[c];
+      return sum / layer;
+    }
     default:
       return 0.0;
   }

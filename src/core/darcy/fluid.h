@@ -90,7 +90,7 @@ class GrainBackend {
 
 class DarcyFluid {
  public:
-  static constexpr int VECTOR_SIZE = 12;    // compute_vector's values, doc/fix_darcy_pressure.rst
+  static constexpr int VECTOR_SIZE = 13;    // compute_vector's values, doc/fix_darcy_pressure.rst
   static const RestartFormat RESTART;
 
   // Throws InputError when the grid cannot be held (int index overflow, more memory than

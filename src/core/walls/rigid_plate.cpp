@@ -21,11 +21,12 @@ void RigidPlate::setup(RigidPlateHost &host, const PlateStep &now)
 
 void RigidPlate::post_force(RigidPlateHost &host, const PlateStep &now)
 {
-  const std::string at = "Fix shear/stress " + id_ + ": ";
+  // the message's prefix, written only when the run stops
+  const auto at = [this] { return "Fix shear/stress " + id_ + ": "; };
   double sums[3];
   host.plate_sums(sums);
   host.sum_over_ranks(sums, 3);
-  if (sums[2] <= 0.0) host.stop(at + "group " + host.group_name() + " has no grains");
+  if (sums[2] <= 0.0) host.stop(at() + "group " + host.group_name() + " has no grains");
 
   const double mean_x = sums[1] / sums[2];
   // a new run (or a restart) carries the displacement on from where it was
@@ -34,7 +35,7 @@ void RigidPlate::post_force(RigidPlateHost &host, const PlateStep &now)
   // bound: half the neighbor skin per step, beyond which contacts could be missed
   const double moved = displacement - displacement_, bound = 0.5 * host.neighbor_skin();
   if (!now.setup && !(std::fabs(moved) <= bound))
-    host.stop(at + "the plate ran away at step " + std::to_string(now.step) + ": it moved " +
+    host.stop(at() + "the plate ran away at step " + std::to_string(now.step) + ": it moved " +
               round_trip_text(moved) + " in one step (v ≈ " + round_trip_text(moved / now.dt) +
               "), more than half the neighbor skin (" + round_trip_text(bound) + ")");
   displacement_ = displacement;
@@ -43,7 +44,7 @@ void RigidPlate::post_force(RigidPlateHost &host, const PlateStep &now)
 
   const double a = plate_acceleration(settings_.tau, area, sums[0], settings_.mass);
   if (!std::isfinite(a))
-    host.stop(at + "plate acceleration " + round_trip_text(a) + " at step " +
+    host.stop(at() + "plate acceleration " + round_trip_text(a) + " at step " +
               std::to_string(now.step) + " is not finite");
   host.move_as_plate(a / host.force_to_velocity());
 }

@@ -78,21 +78,24 @@ void StressWall::final_integrate(double dt)
   v_wall_ += 0.5 * dt * wall_force_ / settings_.mass;
 }
 
-// every rank holds the same wall, so every rank reaches the same verdict
+// every rank holds the same wall, so every rank reaches the same verdict; the message is
+// written only then (formatting it every step cost as much as the wall's contacts)
 void StressWall::check_in_box(StressWallHost &host, long long step)
 {
-  const std::string at = "Fix wall/stress " + id_ + ": ";
-  const std::string z = round_trip_text(z_wall_), when = std::to_string(step);
-  if (!std::isfinite(z_wall_) || !std::isfinite(v_wall_))
-    host.stop(at + "the wall ran away at step " + when + ": z = " + z + ", v = " +
-              round_trip_text(v_wall_));
   const WallBox box = host.box();
-  if (z_wall_ < box.bottom)
-    host.stop(at + "the wall fell to z = " + z + " at step " + when + ", below the box bottom " +
-              round_trip_text(box.bottom) + " and so through every grain");
   // a shrink-wrapped top follows the grains: allow a gap as high as the box itself
   const double top = box.top_shrink_wrapped ? box.top + (box.top - box.bottom) : box.top;
-  if (z_wall_ > top)
+  const bool finite = std::isfinite(z_wall_) && std::isfinite(v_wall_);
+  if (finite && z_wall_ >= box.bottom && z_wall_ <= top) return;
+  const std::string at = "Fix wall/stress " + id_ + ": ";
+  const std::string z = round_trip_text(z_wall_), when = std::to_string(step);
+  if (!finite)
+    host.stop(at + "the wall ran away at step " + when + ": z = " + z + ", v = " +
+              round_trip_text(v_wall_));
+  else if (z_wall_ < box.bottom)
+    host.stop(at + "the wall fell to z = " + z + " at step " + when + ", below the box bottom " +
+              round_trip_text(box.bottom) + " and so through every grain");
+  else
     host.stop(at + "the wall rose to z = " + z + " at step " + when + ", above the box top " +
               round_trip_text(top));
 }

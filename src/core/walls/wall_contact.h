@@ -75,14 +75,16 @@ template <class G, class PerAtomVirial> struct WallContacts {
   PW_INLINE void operator()(const int i, double *sums) const
   {
     if (!(g.mask(i) & groupbit)) return;
-    const WallContact c = wall_contact(g.x(i, 2), g.radius(i), g.v(i, 2), z_wall, v_wall, kn,
-                                       gamma, damping_velocity);
+    const double z = g.x(i, 2), radius = g.radius(i);
+    if (z + radius - z_wall <= 0.0) return;    // out of reach: adds nothing (most grains)
+    const WallContact c = wall_contact(z, radius, g.v(i, 2), z_wall, v_wall, kn, gamma,
+                                       damping_velocity);
     g.f(i, 2) += c.force_z;
     sums[0] -= c.force_z;
     sums[1] += c.energy;
     sums[3] -= c.damping_z;
     if (c.force_z != 0.0) {
-      const double w = (g.x(i, 2) - z_wall) * c.force_z;
+      const double w = (z - z_wall) * c.force_z;
       sums[2] += w;
       per_atom(i, w);
     }
