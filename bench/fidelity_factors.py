@@ -41,25 +41,27 @@ RESETTLE = 0.05                           # s: the shipped bed consolidated agai
 # k_n x10, x100 with the wall dashpot's damping ratio gamma_w/(2 sqrt(k_n m)) kept
 STIFF = {"kn10": {"kn": 10 * KN, "gamma_w": GAMMA_W * 10 ** 0.5},
          "kn100": {"kn": 100 * KN, "gamma_w": GAMMA_W * 10.0}}
-BEDS = {  # name: (in.pack / in.consolidate -var overrides, packed anew or the shipped bed)
+SHIPPED_FRICTIONLESS = "consolidated_frictionless_0.data"
+BEDS = {  # name: (in.pack / in.consolidate -var overrides, True: packed anew; or the shipped bed)
     "spread": ({"radius_spread": SPREAD, "mu_prep": 0.0}, True),
-    "kn10": (dict(FRICTIONLESS, **STIFF["kn10"], settle_time=RESETTLE), False),
-    "kn100": (dict(FRICTIONLESS, **STIFF["kn100"], settle_time=RESETTLE), False),
+    "kn10": (dict(FRICTIONLESS, **STIFF["kn10"], settle_time=RESETTLE), SHIPPED_FRICTIONLESS),
+    "kn100": (dict(FRICTIONLESS, **STIFF["kn100"], settle_time=RESETTLE), SHIPPED_FRICTIONLESS),
 }
 
 
 def prepare_bed(work, name, variables, pack):
-    """pack (or take the shipped bed) and consolidate; the bed's data file"""
+    """pack (True) or take a shipped bed (pack: its data file) and consolidate; the bed's
+    data file"""
     d = os.path.join(work, "beds", name)
     out = os.path.join(d, "bed.data")
     if os.path.exists(out):
         return out
     prepare(d)
-    if pack:
+    if pack is True:
         run_lmp(d, "in.pack", dict(variables, output="packed.data"), log="log.pack")
         source = "packed.data"
     else:
-        source = "consolidated_frictionless_0.data"
+        source = pack
     run_lmp(d, "in.consolidate", dict(variables, input=source, output="bed.data"),
             log="log.consolidate")
     return out
@@ -74,12 +76,14 @@ def first_coordination(work, name, data, variables):
     return load(os.path.join(d, "timeseries.txt"))["coordination"][0]
 
 
-def bisect_mu_prep(work, jobs_map, low=0.0, high=0.4, rounds=3, tol=0.05):
-    """mu_prep (spread 0.009) whose bed starts at TARGET_Z: two probes a round (both
-    cores), the bracket cut to the third that holds the target; the probes as rows"""
+def bisect_mu_prep(work, jobs_map, low=0.0, high=0.4, rounds=3, tol=0.05, probe=None,
+                   target=TARGET_Z):
+    """mu_prep whose bed starts at target: two probes a round (both cores), the bracket cut
+    to the third that holds the target; the probes (mu, z, H, phi) as rows. probe(mu): by
+    default a bed of spread 0.009 and its first coordination by our count"""
     probes = []
 
-    def probe(mu):
+    def first_ours(mu):
         name = "probe_mu%.4f" % mu
         data = prepare_bed(work, name, {"radius_spread": SPREAD, "mu_prep": mu}, True)
         height, phi = bed_geometry(data)
@@ -88,14 +92,14 @@ def bisect_mu_prep(work, jobs_map, low=0.0, high=0.4, rounds=3, tol=0.05):
 
     for _ in range(rounds):
         mus = [low + (high - low) * f for f in (1.0 / 3.0, 2.0 / 3.0)]
-        found = jobs_map(probe, mus)
+        found = jobs_map(probe or first_ours, mus)
         probes += found
-        best = min(found, key=lambda p: abs(p[1] - TARGET_Z))
-        if abs(best[1] - TARGET_Z) < tol:
+        best = min(found, key=lambda p: abs(p[1] - target))
+        if abs(best[1] - target) < tol:
             break
         # coordination falls with friction: keep the third that brackets the target
         (m1, z1, _, _), (m2, z2, _, _) = found
-        low, high = (low, m1) if TARGET_Z > z1 else ((m1, m2) if TARGET_Z > z2 else (m2, high))
+        low, high = (low, m1) if target > z1 else ((m1, m2) if target > z2 else (m2, high))
     return sorted(probes)
 
 
@@ -211,7 +215,7 @@ def beds_table(work):
     lines = ["| bed | H (m) | phi | coordination at 2.5 ms | cell_z, mu_f, mass_factor |",
              "|---|---|---|---|---|"]
     for name, run in BED_RUN.items():
-        data = os.path.join(EXAMPLE, "consolidated_frictionless_0.data") if name == "shipped" else \
+        data = os.path.join(EXAMPLE, SHIPPED_FRICTIONLESS) if name == "shipped" else \
             os.path.join(work, "beds", name, "bed.data")
         series = os.path.join(work, "factors", run, "timeseries.txt")
         if not os.path.exists(data):

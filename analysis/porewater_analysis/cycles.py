@@ -133,8 +133,9 @@ def original_data_file_metrics(path):
 
 def factor_metrics(c, cycles, period=PERIOD, tau=TAU, amp=AMP):
     """per cycle {cycle: metrics}: cycle_metrics' slip for the whole cycles, plus
-    coordination while creeping (phases 0.2-0.6), suction during the slip and the plate's
-    landing; n of each cycle's creep windows (a partial cycle: those it covers)"""
+    coordination while creeping (phases 0.2-0.6), suction during the slip (the bed's mean;
+    right under the plate where the series has p_top_layer) and the plate's landing; n of
+    each cycle's creep windows (a partial cycle: those it covers)"""
     t = c["time"]
     whole = int(np.floor(cycles + 1e-9))
     out = {r["cycle"]: r for r in cycle_metrics(c, True, period, whole, stuck_until=0.2,
