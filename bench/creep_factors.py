@@ -54,8 +54,8 @@ from scipy import stats
 
 from ensemble import AGAINST_PAPER, METRICS, mean_band, run_metrics, summary
 from example_runs import EXAMPLE, head_commit, load, prepare, read_cost, run_lmp
-from fidelity_factors import (MU_PREP_ORIGINAL, RESETTLE, SPREAD, STIFF, bed_geometry, bed_groups,
-                              bisect_mu_prep, prepare_bed)
+from fidelity_factors import (MU_PREP_ORIGINAL, RESETTLE, SHIPPED_FRICTIONLESS, SPREAD, STIFF,
+                              bed_geometry, bed_groups, bisect_mu_prep, prepare_bed)
 from time_to_solution import CYCLES, KEEP, PERIOD, band, freeze_plugin, members, run_one
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -204,7 +204,8 @@ def record_runs(work):
             if not m:
                 continue
             grid = dict(case_bed(work, case)[1], **variables)
-            store[name] = {"case": case, "metrics": m, "cost": read_cost(d), "commit": head_commit(),
+            commit = store.get(name, {}).get("commit") or head_commit()   # the run's, kept
+            store[name] = {"case": case, "metrics": m, "cost": read_cost(d), "commit": commit,
                            "face": face_offset(work, name, grid.get("cell_z", CELL_Z),
                                                grid.get("grid_z", LAYERS + 1) - 1)}
     with open(RUNS + ".new", "w") as f:
@@ -263,12 +264,17 @@ def reference_row():
         else "" for k in COLUMNS) + " |"
 
 
-def compare(ens, default, key):
-    """'p' of Welch's t-test of a case's metric against the default's, or ''"""
+def welch(ens, default, key):
+    """(p, the case's mean minus the default's, its 95 % half-interval) of Welch's t-test of
+    a metric, or None with fewer than 3 runs on either side"""
     a, b = summary(ens, key), summary(default, key)
     if len(a) < 3 or len(b) < 3:
-        return ""
-    return "%.2g" % stats.ttest_ind(a, b, equal_var=False).pvalue
+        return None
+    va, vb = a.var(ddof=1) / len(a), b.var(ddof=1) / len(b)
+    dof = (va + vb) ** 2 / (va ** 2 / (len(a) - 1) + vb ** 2 / (len(b) - 1))
+    diff = a.mean() - b.mean()
+    return (2 * stats.t.sf(abs(diff) / np.sqrt(va + vb), dof), diff,
+            stats.t.ppf(0.975, dof) * np.sqrt(va + vb))
 
 
 def cell(ens, key):
@@ -276,16 +282,6 @@ def cell(ens, key):
     that does not converge from its default p0; the default ensemble's suction_top)"""
     have = len(summary(ens, key))
     return mean_band(ens, key) + ("" if have in (0, len(ens)) else " (%d of %d)" % (have, len(ens)))
-
-
-def difference(ens, default, key):
-    """the case's mean minus the default's, ± its 95 % interval (Welch), or None"""
-    a, b = summary(ens, key), summary(default, key)
-    if len(a) < 3 or len(b) < 3:
-        return None
-    va, vb = a.var(ddof=1) / len(a), b.var(ddof=1) / len(b)
-    dof = (va + vb) ** 2 / (va ** 2 / (len(a) - 1) + vb ** 2 / (len(b) - 1))
-    return a.mean() - b.mean(), stats.t.ppf(0.975, dof) * np.sqrt(va + vb)
 
 
 def table(store):
@@ -304,13 +300,13 @@ def table(store):
               "| case | " + " | ".join(labels[k] for k in COLUMNS) + " |",
               "|---|" + "---|" * len(COLUMNS)]
     for label, ens, _, _ in rows[1:]:
-        lines.append("| %s | %s |" % (label, " | ".join(compare(ens, rows[0][1], k)
-                                                         for k in COLUMNS)))
+        tests = [welch(ens, rows[0][1], k) for k in COLUMNS]
+        lines.append("| %s | %s |" % (label, " | ".join("%.2g" % t[0] if t else "" for t in tests)))
     lines += ["", "n minus the default's, both fits (95 % interval, Welch):", ""]
     for label, ens, _, _ in rows[1:]:
-        cells = [difference(ens, rows[0][1], k) for k in ("n", "n_original")]
+        cells = [welch(ens, rows[0][1], k) for k in ("n", "n_original")]
         lines.append("- %s: %s" % (label, "; ".join(
-            "%s %+.2f ± %.2f" % (k, *d) if d else "%s: fewer than 3 runs" % k
+            "%s %+.2f ± %.2f" % (k, *d[1:]) if d else "%s: fewer than 3 runs" % k
             for k, d in zip(("ours", "the original's"), cells))))
     return lines
 
@@ -381,7 +377,7 @@ HEIGHT_RATIO = 23.5 / 12.49       # H/d of Table S1 over the default bed's (0.24
 INTERIOR = 3                      # grain diameters from either fixed layer: the interior
 
 
-BEDS = {"original": "consolidated_0.data", "frictionless": "consolidated_frictionless_0.data"}
+BEDS = {"original": "consolidated_0.data", "frictionless": SHIPPED_FRICTIONLESS}
 
 
 def first_state(work, name, data, tiles, variables, step=1170):
@@ -472,9 +468,10 @@ def count_geometry(work):
     lines = ["| bed (at the first sample, 2.5 ms, unless said) | grains | our count | the original's count | "
              "at Table S1's height too (estimate): ours | the original's |", "|---|---|---|---|---|---|"]
     states = [(label, first_state(work, bed, os.path.join(EXAMPLE, BEDS[bed]), tiles,
-                                  {"bed": bed})) for label, bed, tiles in rows]
+                                  {"bed": bed}), False) for label, bed, tiles in rows]
     creeping = creeping_state(work)
-    states += [(label, first_state(work, "creeping", creeping, tiles, {}, 0)) for label, tiles in (
+    states += [(label, first_state(work, "creeping", creeping, tiles, {}, 0), False)
+               for label, tiles in (
         ("the default bed creeping (member 0 at %.1f cycles, as read)" % CREEP_STATE_CYCLES, (1, 1)),
         ("the same on Table S1's footprint", (2, 2)))]
     for case, label in (("packed0.044", "the default's grains packed with friction 0.044"),
@@ -482,10 +479,9 @@ def count_geometry(work):
         data, variables = case_bed(work, case)
         variables = {k: v for k, v in variables.items() if k != "data"}
         states += [(text, first_state(work, CASES[case][2] + "_mu%.4f" % MU_TALL, data, tiles,
-                                      variables)) for text, tiles in (
+                                      variables), case == "tall") for text, tiles in (
             (label, (1, 1)), (label + " on Table S1's footprint", (2, 2)))]
-    for label, g in states:
-        tall = label.startswith("the tall bed")         # already of Table S1's height
+    for label, g, tall in states:                      # tall: already of Table S1's height
         lines.append("| %s | %d | %.2f | %.2f | %s | %s |" % (
             label, len(g["z"]), g["c_contacts"].mean(), g["c_coordination_original"].mean(),
             "(is)" if tall else "%.2f" % tall_estimate(g, "c_contacts"),
