@@ -14,11 +14,19 @@ Usage (source scripts/env.sh first):
 COMMIT: the example's inputs as of that commit (a build older than today's inputs); GRID:
 in.tidal_shear's -var processor_grid, e.g. '#2 1 1' (the grid LAMMPS used is read from
 its log).
+
+    /usr/bin/python3 bench/step_time.py --growth [--repeat K] [--markdown FILE] \
+        [--figure PNG] [--gpu-json JSON] PLUGIN_DIR      (PLUGIN_DIR "replot": the figure
+                                                          again from the --markdown table)
+the reduced example tiled 1, 2, 4 times per side (step_cost.py's `tiled`: 1,200, 9,600,
+76,800 grains, the fluid cells tiled with it) on 1 and 2 ranks, with and without the pore
+water (-var fluid 0): µs per step and per grain-step, and the fluid's share of the step
+(1 - dry / wet), every configuration in turn, K times; the fastest run of each.
 """
 import argparse
+import json
 import os
 import re
-import statistics
 import subprocess
 import sys
 import tempfile
@@ -26,9 +34,11 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 from example_runs import EXAMPLE, run_lmp    # noqa: E402
-from step_cost import SCENES, prepare_scene    # noqa: E402
+from step_cost import SCENES, prepare_scene, tiled    # noqa: E402
 
 STEPS, RANKS, REPEAT = 20000, 2, 3
+# growth: copies per side -> steps (multiples of the time series' 575 and the fluid's 25)
+GROWTH_TIMED_STEPS = {1: 23000, 2: 5750, 4: 1150}
 SECTIONS = ("Pair", "Neigh", "Comm", "Output", "Modify", "Other")
 
 
@@ -71,8 +81,9 @@ def timer_breakdown(log):
 
 
 def timed_scene(scene, plugin, commit, grid, steps, ranks):
-    """one run of a scene: (timer breakdown, load before, load after)"""
-    _, variables = SCENES[scene]
+    """one run of a scene (a SCENES name, or -var overrides): (timer breakdown, load before,
+    load after)"""
+    variables = SCENES[scene][1] if isinstance(scene, str) else scene
     variables = dict(variables, run_steps=steps)
     if grid:
         variables["processor_grid"] = grid
@@ -113,6 +124,86 @@ def table(results, steps):
     return lines
 
 
+def timed_growth(plugin, repeat):
+    """{(grains, ranks, fluid): [timer breakdowns]} of the tiled scenes, all in turn"""
+    results = {}
+    for k in range(repeat):
+        for copies, steps in GROWTH_TIMED_STEPS.items():
+            grains, variables = tiled(copies)
+            for ranks in (1, 2):
+                for fluid in (1, 0):
+                    r = timed_scene(dict(variables, fluid=fluid), plugin, None, None, steps, ranks)
+                    results.setdefault((grains, ranks, fluid), []).append(r)
+                    print("%d grains, %d rank(s), fluid %d, run %d: %.1f us per step" % (
+                        grains, ranks, fluid, k + 1, 1e6 * r[1] / r[2]), flush=True)
+    return results
+
+
+def growth_table(results):
+    """rows: grains, ranks: the fastest run's us per step and per grain-step, its timer
+    sections per grain-step, the fluid's share (1 - the fastest dry / the fastest wet)"""
+    lines = ["| grains | ranks | µs per step (fastest; median) | µs per grain-step | Pair | Modify "
+             "| Comm | fluid's share of the step | load before/after (each run) |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    rows = []
+    for (grains, ranks, fluid), runs in sorted(results.items()):
+        if not fluid:
+            continue
+        per_step = sorted(r[1] / r[2] for r in runs)
+        dry = min(r[1] / r[2] for r in results[(grains, ranks, 0)])
+        best = min(runs, key=lambda r: r[1] / r[2])
+        sec = lambda name: 1e6 * best[0].get(name, (0, 0, 0))[2] / best[2] / grains
+        share = 1.0 - dry / per_step[0]
+        rows.append((grains, ranks, 1e6 * per_step[0] / grains, share))
+        lines.append("| %d | %d | %.0f (%.0f) | %.4f | %.4f | %.4f | %.4f | %.1f %% | %s |" % (
+            grains, ranks, 1e6 * per_step[0], 1e6 * per_step[len(per_step) // 2],
+            1e6 * per_step[0] / grains, sec("Pair"), sec("Modify"), sec("Comm"), 100 * share,
+            ", ".join("%.1f/%.1f" % (r[5], r[6]) for r in runs)))
+    return lines, rows
+
+
+def growth_rows(markdown):
+    """the (grains, ranks, us per grain-step, fluid's share) rows of the first --growth table
+    in a markdown file"""
+    rows = []
+    for line in open(markdown):
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) == 9 and cells[0].isdigit():
+            rows.append((int(cells[0]), int(cells[1]), float(cells[3]),
+                         float(cells[7].rstrip(" %")) / 100.0))
+        elif rows:
+            break
+    return rows
+
+
+def growth_figure(rows, path, gpu=None):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (a, b) = plt.subplots(1, 2, figsize=(9, 3.6))
+    for ranks, marker in ((1, "o"), (2, "s")):
+        mine = [r for r in rows if r[1] == ranks]
+        a.plot([r[0] for r in mine], [r[2] for r in mine], marker=marker, label="%d rank%s" % (
+            ranks, "s" if ranks > 1 else ""))
+        b.plot([r[0] for r in mine], [100 * r[3] for r in mine], marker=marker)
+    if gpu:    # bench/gpu_check.py's growth rows on a GPU: grains, steps, us per step, per grain-step
+        a.plot([r[0] for r in gpu["growth"]], [r[3] for r in gpu["growth"]], marker="^", color="k",
+               label="one GPU (%s), /kk" % gpu.get("device", "H200"))
+        a.set_yscale("log")
+    for ax in (a, b):
+        ax.set_xscale("log")
+        ax.set_xlabel("grains")
+    a.set_ylabel("µs per grain-step (fastest run)")
+    if not gpu:
+        a.set_ylim(bottom=0)
+    a.legend()
+    b.set_ylabel("pore water's share of the step (%)")
+    b.axhline(10, color="grey", lw=0.8, ls="--")
+    b.axhline(0, color="grey", lw=0.8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("builds", nargs="+", help="LABEL=PLUGIN_DIR[@COMMIT][#GRID]")
@@ -121,7 +212,30 @@ def main():
     ap.add_argument("--ranks", type=int, default=RANKS)
     ap.add_argument("--repeat", type=int, default=REPEAT)
     ap.add_argument("--markdown", help="write the table here too")
+    ap.add_argument("--growth", action="store_true", help="the tiled scenes, one build")
+    ap.add_argument("--figure", help="--growth: the figure's PNG")
+    ap.add_argument("--gpu-json", help="--growth: bench/gpu_check.py's gpu_check.json, its growth "
+                    "rows drawn beside (measured on a GPU machine)")
     args = ap.parse_args()
+    if args.growth and args.builds == ["replot"]:    # the figure again from --markdown's table
+        growth_figure(growth_rows(args.markdown), args.figure,
+                      json.load(open(args.gpu_json)) if args.gpu_json else None)
+        return
+    if args.growth:
+        (plugin,) = args.builds
+        lines, rows = growth_table(timed_growth(os.path.abspath(plugin), args.repeat))
+        lines = ["LAMMPS' timer of the reduced example (-var fast 1) tiled c x c x c, c = %s, "
+                 "for %s steps, on 1 and 2 ranks, wet and dry (-var fluid 0), all in turn, %d "
+                 "times each; per grain-step: the fastest run's, the timer's sections their "
+                 "largest rank's." % (", ".join(map(str, GROWTH_TIMED_STEPS)),
+                                      ", ".join(map(str, GROWTH_TIMED_STEPS.values())), args.repeat),
+                 ""] + lines
+        print("\n".join(lines))
+        if args.markdown:
+            open(args.markdown, "w").write("\n".join(lines) + "\n")
+        if args.figure:
+            growth_figure(rows, args.figure, json.load(open(args.gpu_json)) if args.gpu_json else None)
+        return
     builds = [parse_build(b) for b in args.builds]
     results = {b[0]: [] for b in builds}
     for k in range(args.repeat):

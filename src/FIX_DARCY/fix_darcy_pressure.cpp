@@ -41,11 +41,13 @@ FixDarcyPressure::FixDarcyPressure(LAMMPS *lmp, int narg, char **arg) :
   z_top = porewater::EqualValue(s.z_top);
   bottom = porewater::EqualValue(s.bottom);
   // every rank holds the whole grid: the ranks sharing this node's memory hold as many copies
+  int ranks_on_node = 1;
+#ifndef MPI_STUBS    // LAMMPS' serial MPI stubs (a LAMMPS built without MPI) have no MPI-3
   MPI_Comm node;
   MPI_Comm_split_type(world, MPI_COMM_TYPE_SHARED, comm->me, MPI_INFO_NULL, &node);
-  int ranks_on_node = 1;
   MPI_Comm_size(node, &ranks_on_node);
   MPI_Comm_free(&node);
+#endif
   fluid = porewater::or_stop(lmp, [&] {
     return std::unique_ptr<porewater::DarcyFluid>(
         new porewater::DarcyFluid(s, porewater::darcy_grid_geom(s, box), id, ranks_on_node));
