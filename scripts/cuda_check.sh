@@ -9,7 +9,9 @@ REPO=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 # shellcheck source=scripts/versions.sh
 source "$REPO/scripts/versions.sh"
 CUDA_HOME=${CUDA_HOME:-/usr/local/cuda}
-CUDA_ARCH=${PW_CUDA_ARCH:-AMPERE80}   # Kokkos_ARCH_<...>: AMPERE80 = sm_80, HOPPER90 needs Kokkos 4
+# Kokkos_ARCH_<...>: the check compiles for AMPERE80 (sm_80); the GPU kit builds for HOPPER90
+# (sm_90, scripts/patches/kokkos-hopper90.patch; scripts/gpu_kit.sh)
+CUDA_ARCH=${PW_CUDA_ARCH:-AMPERE80}
 log() { printf '[cuda %s] %s\n' "$(date +%H:%M:%S)" "$*"; }
 
 if [ ! -x "$CUDA_HOME/bin/nvcc" ]; then
