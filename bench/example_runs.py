@@ -23,15 +23,16 @@ FRICTIONLESS = {"bed": "frictionless"}
 
 
 def run_lmp(workdir, infile, variables, ranks=1, plugin_dir=None, log="log.lammps", args=(),
-            threads=1):
+            threads=1, extra_env=None):
     """lmp -in infile in workdir (niced; `threads` OpenMP threads, extra lmp `args` such as
-    KOKKOS' -k on t 2 -sf kk); returns its CPU seconds."""
+    KOKKOS' -k on t 2 -sf kk, `extra_env` added to its environment); returns its CPU seconds."""
     # OMP_PROC_BIND (scripts/env.sh: spread) pins a 1-thread run to core 0: concurrent runs
     # would share that core
     env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND="false",
                OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     if plugin_dir:
         env["LD_LIBRARY_PATH"] = plugin_dir + ":" + env.get("LD_LIBRARY_PATH", "")
+    env.update(extra_env or {})
     cmd = ["nice", "-n", "10"]
     if ranks > 1:
         cmd += ["mpirun", "--oversubscribe", "-np", str(ranks), "-x", "LD_LIBRARY_PATH", "-x", "OMP_PROC_BIND"]

@@ -50,37 +50,39 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from example_runs import loop_time    # noqa: E402
-from host_compare import QUANTITIES, perturbation    # noqa: E402
+from example_runs import loop_time, run_lmp    # noqa: E402
+from host_compare import SPREAD_FACTOR, perturbation, spread_agreement    # noqa: E402
 from step_cost import SCENES, prepare_scene, tiled    # noqa: E402
 from time_to_solution import PERTURB as DISPLACEMENT    # noqa: E402  (the ensembles' perturbation, m)
+from porewater_analysis.dump import read_dump    # noqa: E402
 from porewater_analysis.timeseries import load as load_series    # noqa: E402
 
 GPU_ACCEL = "-k on g 1 -sf kk -pk kokkos neigh half newton off"
 KK_TEST_TOLERANCE = 1e-10      # m: |x| of /kk vs CPU in the style matrix (chute, 1,000 steps)
-SPREAD_FACTOR = 3.0            # bench/host_compare.py: agreement within 3 x the chaotic spread
 ROUNDOFF_STEPS, ROUNDOFF_EVERY = 1000, 100
 CYCLE_FRACTION = 0.05
 S1_STEPS = 10000
 GROWTH_STEPS = {1: 2300, 2: 1150, 4: 575}    # whole fluid intervals (25 steps at -var fast 1)
 
 
-def lmp_env(kit):
-    """the environment lmp runs in: the kit's lmp and libraries first, or scripts/env.sh's"""
-    env = dict(os.environ, OMP_NUM_THREADS=os.environ.get("OMP_NUM_THREADS", "2"),
-               OMP_PROC_BIND="false")
-    if kit:
-        env["PATH"] = os.path.join(kit, "bin") + ":" + env["PATH"]
-        env["LD_LIBRARY_PATH"] = os.path.join(kit, "lib") + ":" + env.get("LD_LIBRARY_PATH", "")
-    return env
+def use_kit(kit):
+    """the kit's lmp and libraries first on this process' paths (its runs inherit them)"""
+    os.environ["PATH"] = os.path.join(kit, "bin") + ":" + os.environ["PATH"]
+    os.environ["LD_LIBRARY_PATH"] = os.path.join(kit, "lib") + ":" + os.environ.get("LD_LIBRARY_PATH", "")
 
 
-def run(work, name, variables, accel, env, extra_env=None, edits=()):
+def accel_threads(accel):
+    """the OpenMP threads that lmp's accelerator arguments ask for (-k on t N), else 1"""
+    words = shlex.split(accel)
+    return int(words[words.index("t") + 1]) if "t" in words else 1
+
+
+def run(work, name, variables, accel, extra_env=None, edits=()):
     """in.tidal_shear in work/name with -var `variables` (a scene's `data` and `copies`: the
     default bed tiled, bench/step_cost.py) and its lines `edits` (old, new) replaced: its run
     loops' seconds, steps, us per step"""
     d = os.path.join(work, name)
-    variables = prepare_scene(variables, d, env)
+    variables = prepare_scene(variables, d, dict(os.environ))
     if edits:
         path = os.path.join(d, "in.tidal_shear")
         text = open(path).read()
@@ -89,33 +91,15 @@ def run(work, name, variables, accel, env, extra_env=None, edits=()):
                 sys.exit("in.tidal_shear has no line %r to replace" % old)
             text = text.replace(old, new)
         open(path, "w").write(text)
-    cmd = ["lmp", "-in", "in.tidal_shear", "-log", "log.lammps", "-screen", "none"]
-    cmd += shlex.split(accel)
-    for k, v in variables.items():
-        cmd += ["-var", k, str(v)]
-    t0 = time.time()
-    proc = subprocess.run(cmd, cwd=d, env=dict(env, **(extra_env or {})), capture_output=True, text=True)
-    if proc.returncode != 0:
+    try:
+        run_lmp(d, "in.tidal_shear", variables, args=shlex.split(accel), threads=accel_threads(accel),
+                extra_env=extra_env)
+    except subprocess.CalledProcessError as e:
         log = os.path.join(d, "log.lammps")
-        tail = open(log).read()[-3000:] if os.path.exists(log) else ""
-        sys.exit("run %s failed (%s):\n%s\n%s\n%s" % (name, " ".join(cmd), tail, proc.stdout[-2000:],
-                                                      proc.stderr[-2000:]))
+        sys.exit("run %s failed (%s):\n%s" % (name, " ".join(e.cmd), open(log).read()[-3000:]
+                                              if os.path.exists(log) else ""))
     seconds, steps = loop_time(os.path.join(d, "log.lammps"), last=False)
-    return {"dir": d, "seconds": seconds, "steps": steps, "wall": time.time() - t0,
-            "us_per_step": 1e6 * seconds / steps}
-
-
-def read_dump(path):
-    """(box lengths, {column: array sorted by id}) of a LAMMPS custom dump"""
-    with open(path) as f:
-        lines = f.readlines()
-    bounds = [i for i, l in enumerate(lines) if l.startswith("ITEM: BOX BOUNDS")][0]
-    box = np.array([[float(v) for v in lines[bounds + k].split()[:2]] for k in (1, 2, 3)])
-    header = [i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS")][0]
-    names = lines[header].split()[2:]
-    data = np.loadtxt(lines[header + 1:], ndmin=2)
-    data = data[np.argsort(data[:, names.index("id")])]
-    return box[:, 1] - box[:, 0], {n: data[:, k] for k, n in enumerate(names)}
+    return {"dir": d, "seconds": seconds, "steps": steps, "us_per_step": 1e6 * seconds / steps}
 
 
 def largest_dx(dir_a, dir_b, step):
@@ -134,20 +118,20 @@ def largest_dx(dir_a, dir_b, step):
     return worst
 
 
-def cpu_pair(work, name, variables, env):
+def cpu_pair(work, name, variables):
     """the CPU run and the CPU run with in.params' first PERTURBED value one ulp higher, side
     by side"""
     param, _, moved = perturbation()
     with ThreadPoolExecutor(2) as pool:
-        cpu = pool.submit(run, work, name + "_cpu", variables, "", env)
-        ulp = pool.submit(run, work, name + "_cpu_ulp", dict(variables, **{param: moved}), "", env)
+        cpu = pool.submit(run, work, name + "_cpu", variables, "")
+        ulp = pool.submit(run, work, name + "_cpu_ulp", dict(variables, **{param: moved}), "")
         return cpu.result(), ulp.result(), "%s %s" % (param, moved)
 
 
-def part_roundoff(work, accel, env, results):
+def part_roundoff(work, accel, results):
     common = {"run_steps": ROUNDOFF_STEPS, "dump_every": ROUNDOFF_EVERY}
-    cpu, ulp, perturbed = cpu_pair(work, "roundoff", common, env)
-    acc = run(work, "roundoff_accel", common, accel, env)
+    cpu, ulp, perturbed = cpu_pair(work, "roundoff", common)
+    acc = run(work, "roundoff_accel", common, accel)
     results["roundoff"] = dx_check(cpu["dir"], acc["dir"], ulp["dir"], perturbed)
 
 
@@ -165,44 +149,36 @@ def dx_check(cpu_dir, accel_dir, ulp_dir, perturbed, again_dir=None):
             "again": again_dir is not None, "passed": all(r[4] for r in rows)}
 
 
-def part_cycle(work, accel, env, results):
+def part_cycle(work, accel, results):
     common = {"cycles": CYCLE_FRACTION}
     with ThreadPoolExecutor(1) as pool:    # the displaced CPU run beside the pair
         displaced = pool.submit(run, work, "cycle_cpu_displaced",
-                                dict(common, perturb=DISPLACEMENT, perturb_seed=1), "", env)
-        cpu, ulp, perturbed = cpu_pair(work, "cycle", common, env)
+                                dict(common, perturb=DISPLACEMENT, perturb_seed=1), "")
+        cpu, ulp, perturbed = cpu_pair(work, "cycle", common)
         runs = {"cpu": cpu, "cpu_ulp": ulp, "cpu_displaced": displaced.result()}
-    runs["accel"] = run(work, "cycle_accel", common, accel, env)
-    runs["accel_again"] = run(work, "cycle_accel_again", common, accel, env)
+    runs["accel"] = run(work, "cycle_accel", common, accel)
+    runs["accel_again"] = run(work, "cycle_accel_again", common, accel)
     series = {k: load_series(os.path.join(r["dir"], "timeseries.txt")) for k, r in runs.items()}
     n = min(len(s["time"]) for s in series.values())
-    worst = lambda a, b, q: float(np.max(np.abs(series[a][q][:n] - series[b][q][:n])))
-    rows, agree = [], True
-    for q, what in QUANTITIES:
-        if q not in series["cpu"]:
-            continue
-        diff = worst("accel", "cpu", q)
-        spreads = [worst("cpu_ulp", "cpu", q), worst("cpu_displaced", "cpu", q),
-                   worst("accel_again", "accel", q)]
-        ratio = diff / max(spreads) if max(spreads) > 0 else (0.0 if diff == 0 else math.inf)
-        agree &= ratio <= SPREAD_FACTOR
-        rows.append((q, what, float(series["cpu"][q][n - 1]), float(series["accel"][q][n - 1]),
-                     diff) + tuple(spreads) + (ratio,))
+    compared, agree = spread_agreement(series, ("accel", "cpu"), [("cpu_ulp", "cpu"), (
+        "cpu_displaced", "cpu"), ("accel_again", "accel")])
+    rows = [(q, what, float(series["cpu"][q][n - 1]), float(series["accel"][q][n - 1]), diff)
+            + tuple(spreads) + (ratio,) for q, what, diff, spreads, ratio in compared]
     results["cycle"] = {"rows": rows, "samples": n, "t_end": float(series["cpu"]["time"][n - 1]),
                         "perturbed": perturbed, "passed": agree,
                         "us_per_step": {k: r["us_per_step"] for k, r in runs.items()},
                         "steps": runs["cpu"]["steps"]}
 
 
-def part_table_s1(work, accel, env, hook, out, results):
+def part_table_s1(work, accel, hook, out, results):
     grains, scene = SCENES["table_s1"]
-    timed = run(work, "s1_accel", dict(scene, run_steps=S1_STEPS), accel, env)
+    timed = run(work, "s1_accel", dict(scene, run_steps=S1_STEPS), accel)
     check = dict(scene, run_steps=ROUNDOFF_STEPS, dump_every=ROUNDOFF_EVERY)
     timer = {"KOKKOS_PROFILE_LIBRARY": hook, "KTIMES_OUT": os.path.join(out, "kernel_times.txt"),
              "KCOUNT_OUT": os.path.join(work, "kernel_counts.txt")}
-    acc = run(work, "s1_accel_check", check, accel, env, extra_env=timer)
-    again = run(work, "s1_accel_check_again", check, accel, env)
-    cpu, ulp, perturbed = cpu_pair(work, "s1_check", check, env)
+    acc = run(work, "s1_accel_check", check, accel, extra_env=timer)
+    again = run(work, "s1_accel_check_again", check, accel)
+    cpu, ulp, perturbed = cpu_pair(work, "s1_check", check)
     results["table_s1"] = {"grains": grains, "steps": timed["steps"], "us_per_step": timed["us_per_step"],
                            "us_per_step_timed_kernels": acc["us_per_step"],
                            "cpu_us_per_step": cpu["us_per_step"], "check_steps": ROUNDOFF_STEPS,
@@ -221,35 +197,35 @@ HOST_EVERY_STEP = {
 HOST_STEPS = 5000
 
 
-def part_host_styles(work, accel, env, results):
+def part_host_styles(work, accel, results):
     """the Table S1-sized scene with ACCEL, as it is and with each host style replaced"""
     _, scene = SCENES["table_s1"]
     variables = dict(scene, run_steps=HOST_STEPS)
     rows = []
     for label, names in (("as it is", ()), ("floor replaced", ("floor",)),
                          ("time series replaced", ("series",)), ("both replaced", ("floor", "series"))):
-        r = run(work, "host_" + "_".join(names or ("none",)), variables, accel, env,
+        r = run(work, "host_" + "_".join(names or ("none",)), variables, accel,
                 edits=[HOST_EVERY_STEP[n] for n in names])
         rows.append((label, r["steps"], r["us_per_step"]))
     results["host_styles"] = rows
 
 
-def part_host_kernels(work, accel, env, hook, out, results):
+def part_host_kernels(work, accel, hook, out, results):
     """the kernel timer on the Table S1-sized scene with both host styles replaced"""
     _, scene = SCENES["table_s1"]
     timer = {"KOKKOS_PROFILE_LIBRARY": hook, "KTIMES_OUT": os.path.join(out, "kernel_times_replaced.txt"),
              "KCOUNT_OUT": os.path.join(work, "kernel_counts_replaced.txt")}
-    r = run(work, "host_kernels", dict(scene, run_steps=ROUNDOFF_STEPS), accel, env, extra_env=timer,
+    r = run(work, "host_kernels", dict(scene, run_steps=ROUNDOFF_STEPS), accel, extra_env=timer,
             edits=list(HOST_EVERY_STEP.values()))
     results["host_kernels"] = {"steps": r["steps"], "us_per_step": r["us_per_step"],
                                "kernels": read_kernel_times(timer["KTIMES_OUT"])}
 
 
-def part_growth(work, accel, env, results):
+def part_growth(work, accel, results):
     rows = []
     for copies, steps in GROWTH_STEPS.items():
         grains, scene = tiled(copies)
-        r = run(work, "growth_x%d" % copies, dict(scene, run_steps=steps), accel, env)
+        r = run(work, "growth_x%d" % copies, dict(scene, run_steps=steps), accel)
         rows.append((grains, r["steps"], r["us_per_step"], r["us_per_step"] / grains))
     results["growth"] = rows
 
@@ -261,13 +237,13 @@ def cpu_model():
     return "?"
 
 
-def machine_record(kit, env):
+def machine_record(kit):
     lines = ["date %s" % time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()),
              "cpus %d (%s), load %s" % (os.cpu_count(), cpu_model(), open("/proc/loadavg").read().strip())]
     for cmd in (["nvidia-smi", "--query-gpu=name,driver_version,memory.total,clocks.sm,clocks.max.sm",
                  "--format=csv"], ["lmp", "-h"]):
         try:
-            text = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=60).stdout
+            text = subprocess.run(cmd, capture_output=True, text=True, timeout=60).stdout
             lines += text.splitlines()[:40] if cmd[0] == "nvidia-smi" else [
                 l for l in text.splitlines() if "LAMMPS" in l or "KOKKOS" in l or "Kokkos" in l][:6]
         except (OSError, subprocess.TimeoutExpired) as e:
@@ -372,19 +348,20 @@ def main():
     work = os.path.abspath(args.work or os.path.join(os.path.dirname(out), "gpu_check_runs"))
     os.makedirs(out, exist_ok=True)
     os.makedirs(work, exist_ok=True)
-    env = lmp_env(kit)
+    if kit:
+        use_kit(kit)
     hook = os.path.join(kit, "lib", "kokkos_dispatches.so") if kit else os.path.join(work, "kokkos_dispatches.so")
     if not kit:
         subprocess.run(["g++", "-O2", "-shared", "-fPIC", "-o", hook,
                         os.path.join(HERE, "kokkos_dispatches.cpp"), "-ldl"], check=True)
-    results = {"accel": args.accel, "machine": machine_record(kit, env)}
+    results = {"accel": args.accel, "machine": machine_record(kit)}
     print("\n".join(results["machine"]), flush=True)
-    parts = {"roundoff": lambda: part_roundoff(work, args.accel, env, results),
-             "cycle": lambda: part_cycle(work, args.accel, env, results),
-             "table_s1": lambda: part_table_s1(work, args.accel, env, hook, out, results),
-             "growth": lambda: part_growth(work, args.accel, env, results),
-             "host_styles": lambda: part_host_styles(work, args.accel, env, results),
-             "host_kernels": lambda: part_host_kernels(work, args.accel, env, hook, out, results)}
+    parts = {"roundoff": lambda: part_roundoff(work, args.accel, results),
+             "cycle": lambda: part_cycle(work, args.accel, results),
+             "table_s1": lambda: part_table_s1(work, args.accel, hook, out, results),
+             "growth": lambda: part_growth(work, args.accel, results),
+             "host_styles": lambda: part_host_styles(work, args.accel, results),
+             "host_kernels": lambda: part_host_kernels(work, args.accel, hook, out, results)}
     try:
         for name in args.parts.split(","):
             t0 = time.time()

@@ -12,6 +12,9 @@ import argparse, math, os, re, shutil, statistics, subprocess, sys, tempfile
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "analysis"))
+from porewater_analysis.dump import read_dump  # noqa: E402
+
 INTEGRATORS = [("nve/sphere", "nve/sphere"), ("nve/sphere/ty3", "nve/sphere/ty3"),
                ("ty3 corrector yes", "nve/sphere/ty3 corrector yes")]
 KN_PAIR, KN_GAS = 1.0e4, 2000.0    # stiffness of the two-grain and gas inputs; m = 1
@@ -44,13 +47,13 @@ def lmp(inp, **var):
     return np.array(rows), loop, stopped
 
 
-def read_dump(path):
+STATE = ("xu", "yu", "zu", "vx", "vy", "vz", "omegax", "omegay", "omegaz")
+
+
+def read_state(path):
     """id-sorted array of xu yu zu vx vy vz omegax omegay omegaz"""
-    with open(path) as f:
-        lines = f.read().splitlines()
-    start = next(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS")) + 1
-    data = np.array([[float(s) for s in l.split()] for l in lines[start:] if l.strip()])
-    return data[np.argsort(data[:, 0])][:, 1:]
+    _, columns = read_dump(path)
+    return np.column_stack([columns[n] for n in STATE])
 
 
 # ------------------------------------------------------------------------------------------
@@ -64,7 +67,7 @@ def pair_state(fixargs, eps, b, mu, t_end):
     dump = os.path.join(WORK, "pair.dump")
     lmp("in.integrator_pair", fixargs=fixargs, dt=repr(dt), steps=steps, b=b, mu=mu, lx=10,
         every=steps, dump=dump)
-    s = read_dump(dump)
+    s = read_state(dump)
     s[:, 0:3] += s[:, 3:6] * (t_end - steps * dt)
     return s, steps
 
@@ -89,7 +92,7 @@ def gas_state(fixargs, steps, horizon, mu, nside=7):
     dump = os.path.join(WORK, "gas.dump")
     lmp("in.integrator_gas", fixargs=fixargs, dt=repr(horizon / steps), steps=steps, nside=nside,
         mu=mu, every=steps, dump=dump)
-    return read_dump(dump)
+    return read_state(dump)
 
 
 def gas_errors(state, ref):

@@ -27,13 +27,10 @@ export NVCC_WRAPPER_DEFAULT_COMPILER=${NVCC_WRAPPER_DEFAULT_COMPILER:-g++}
 
 if [ ! -f "$LAMMPS_CUDA_BUILD/build.ninja" ]; then
   log "configuring the Kokkos-CUDA LAMMPS tree in $LAMMPS_CUDA_BUILD"
-  cmake -S "$LAMMPS_SRC/cmake" -B "$LAMMPS_CUDA_BUILD" -G Ninja -D CMAKE_BUILD_TYPE=Release \
-    -D CMAKE_CXX_COMPILER="$WRAPPER" -D CMAKE_CXX_COMPILER_LAUNCHER=ccache \
-    -D BUILD_SHARED_LIBS=on -D BUILD_MPI=on -D BUILD_OMP=off -D LAMMPS_EXCEPTIONS=on \
-    -D PKG_GRANULAR=on -D PKG_PLUGIN=on -D PKG_KOKKOS=on \
-    -D Kokkos_ENABLE_CUDA=on -D Kokkos_ENABLE_SERIAL=on -D "Kokkos_ARCH_$CUDA_ARCH=on" \
-    -D WITH_JPEG=off -D WITH_PNG=off -D WITH_FFMPEG=off >"$PW_CACHE/cuda-configure.log" 2>&1 ||
-    { tail -30 "$PW_CACHE/cuda-configure.log"; exit 1; }
+  pw_configure_lammps "$LAMMPS_CUDA_BUILD" "$PW_CACHE/cuda-configure.log" \
+    -D CMAKE_CXX_COMPILER="$WRAPPER" -D BUILD_SHARED_LIBS=on -D BUILD_MPI=on -D BUILD_OMP=off \
+    -D LAMMPS_EXCEPTIONS=on -D PKG_KOKKOS=on -D Kokkos_ENABLE_CUDA=on -D Kokkos_ENABLE_SERIAL=on \
+    -D "Kokkos_ARCH_$CUDA_ARCH=on" || exit 1
 fi
 
 if [ "${1:-}" = "--full" ]; then

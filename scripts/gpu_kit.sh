@@ -29,13 +29,10 @@ JOBS=${PW_JOBS:-$(nproc)}
 
 if [ ! -f "$BUILD/build.ninja" ]; then
   log "configuring LAMMPS (KOKKOS CUDA $ARCH + Serial, serial) in $BUILD"
-  cmake -S "$LAMMPS_SRC/cmake" -B "$BUILD" -G Ninja -D CMAKE_BUILD_TYPE=Release \
-    -D CMAKE_CXX_COMPILER="$WRAPPER" -D CMAKE_CXX_COMPILER_LAUNCHER=ccache \
+  pw_configure_lammps "$BUILD" "$PW_CACHE/gpu-kit-configure.log" -D CMAKE_CXX_COMPILER="$WRAPPER" \
     -D CMAKE_INSTALL_PREFIX="$PREFIX" -D BUILD_SHARED_LIBS=on -D BUILD_MPI=off -D BUILD_OMP=off \
-    -D LAMMPS_EXCEPTIONS=on -D PKG_GRANULAR=on -D PKG_PLUGIN=on -D PKG_KOKKOS=on \
-    -D Kokkos_ENABLE_CUDA=on -D Kokkos_ENABLE_SERIAL=on -D "Kokkos_ARCH_$ARCH=on" \
-    -D WITH_JPEG=off -D WITH_PNG=off -D WITH_FFMPEG=off >"$PW_CACHE/gpu-kit-configure.log" 2>&1 ||
-    { tail -30 "$PW_CACHE/gpu-kit-configure.log"; exit 1; }
+    -D LAMMPS_EXCEPTIONS=on -D PKG_KOKKOS=on -D Kokkos_ENABLE_CUDA=on -D Kokkos_ENABLE_SERIAL=on \
+    -D "Kokkos_ARCH_$ARCH=on" || exit 1
 fi
 log "building LAMMPS for $ARCH (~40 min on 2 cores cold; log: $PW_CACHE/gpu-kit-build.log)"
 cmake --build "$BUILD" -j "$JOBS" >"$PW_CACHE/gpu-kit-build.log" 2>&1 ||

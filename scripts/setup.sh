@@ -220,13 +220,9 @@ for host in $HOSTS; do
   fi
   if [ ! -f "$LAMMPS_BUILD/build.ninja" ]; then
     log "configuring LAMMPS ($host) in $LAMMPS_BUILD"
-    cmake -S "$LAMMPS_SRC/cmake" -B "$LAMMPS_BUILD" -G Ninja \
-      -D CMAKE_BUILD_TYPE=Release -D CMAKE_CXX_COMPILER_LAUNCHER=ccache \
+    pw_configure_lammps "$LAMMPS_BUILD" "$logs-configure.log" \
       -D CMAKE_INSTALL_PREFIX="$LAMMPS_PREFIX" -D LAMMPS_INSTALL_RPATH=on \
-      -D BUILD_SHARED_LIBS=on -D BUILD_MPI=on -D BUILD_OMP=on \
-      -D PKG_GRANULAR=on -D PKG_PLUGIN=on "${host_options[@]}" \
-      -D WITH_JPEG=off -D WITH_PNG=off -D WITH_FFMPEG=off >"$logs-configure.log" 2>&1 ||
-      { tail -30 "$logs-configure.log"; exit 1; }
+      -D BUILD_SHARED_LIBS=on -D BUILD_MPI=on -D BUILD_OMP=on "${host_options[@]}" || exit 1
   fi
   log "building LAMMPS ($host; cold: $cold on 2 cores; warm: seconds)"
   cmake --build "$LAMMPS_BUILD" -j "$JOBS" >"$logs-build.log" 2>&1 ||

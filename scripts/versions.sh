@@ -45,3 +45,16 @@ pw_select_host() {
   PW_HOST=$1
 }
 pw_select_host 2021   # cuda_check.sh and the KOKKOS sources use the 2021 tree
+
+# pw_configure_lammps BUILD LOG [CMAKE ARGS...]: the LAMMPS tree in $LAMMPS_SRC configured in
+# BUILD with what every build of it here shares (Ninja, Release, ccache, GRANULAR and PLUGIN,
+# no image or movie libraries) and the given arguments; CMake's output in LOG, its tail shown
+# when it fails
+pw_configure_lammps() {
+  local build=$1 log=$2
+  shift 2
+  cmake -S "$LAMMPS_SRC/cmake" -B "$build" -G Ninja -D CMAKE_BUILD_TYPE=Release \
+    -D CMAKE_CXX_COMPILER_LAUNCHER=ccache -D PKG_GRANULAR=on -D PKG_PLUGIN=on \
+    -D WITH_JPEG=off -D WITH_PNG=off -D WITH_FFMPEG=off "$@" >"$log" 2>&1 ||
+    { tail -30 "$log"; return 1; }
+}
