@@ -103,7 +103,7 @@ def case_bed(work, case):
         return data, dict(tall_groups(*bed_geometry(data)), data="bed.data")
     if bed == "packed":
         data = prepare_bed(work, "packed_mu%.4f" % MU_TALL,
-                           {"radius_spread": SPREAD, "mu_prep": MU_TALL}, True)
+                           {"radius_spread": SPREAD, "mu_prep": MU_TALL})
         return data, dict(bed_groups(*bed_geometry(data)), data="bed.data")
     data = prepare_bed(work, bed, *STIFF_BEDS[bed])
     return data, dict(bed_groups(*bed_geometry(data)), data="bed.data")
@@ -421,7 +421,7 @@ def tall_bed(work, mu):
     """a bed of Table S1's height on the reduced footprint, packed and consolidated with
     friction mu (the default's spread of radii); its data file"""
     return prepare_bed(work, "tall_mu%.4f" % mu, {"ngrains": TALL_GRAINS, "radius_spread": SPREAD,
-                                                  "mu_prep": mu}, True)
+                                                  "mu_prep": mu})
 
 
 def tall_probe(work, mu):

@@ -42,26 +42,24 @@ RESETTLE = 0.05                           # s: the shipped bed consolidated agai
 STIFF = {"kn10": {"kn": 10 * KN, "gamma_w": GAMMA_W * 10 ** 0.5},
          "kn100": {"kn": 100 * KN, "gamma_w": GAMMA_W * 10.0}}
 SHIPPED_FRICTIONLESS = "consolidated_frictionless_0.data"
-BEDS = {  # name: (in.pack / in.consolidate -var overrides, True: packed anew; or the shipped bed)
-    "spread": ({"radius_spread": SPREAD, "mu_prep": 0.0}, True),
+BEDS = {  # name: (in.pack / in.consolidate -var overrides, the shipped bed, or None: packed anew)
+    "spread": ({"radius_spread": SPREAD, "mu_prep": 0.0}, None),
     "kn10": (dict(FRICTIONLESS, **STIFF["kn10"], settle_time=RESETTLE), SHIPPED_FRICTIONLESS),
     "kn100": (dict(FRICTIONLESS, **STIFF["kn100"], settle_time=RESETTLE), SHIPPED_FRICTIONLESS),
 }
 
 
-def prepare_bed(work, name, variables, pack):
-    """pack (True) or take a shipped bed (pack: its data file) and consolidate; the bed's
-    data file"""
+def prepare_bed(work, name, variables, shipped=None):
+    """pack a bed (or take the shipped one, examples/tidal_shear's data file `shipped`) and
+    consolidate it; the bed's data file"""
     d = os.path.join(work, "beds", name)
     out = os.path.join(d, "bed.data")
     if os.path.exists(out):
         return out
     prepare(d)
-    if pack is True:
-        run_lmp(d, "in.pack", dict(variables, output="packed.data"), log="log.pack")
-        source = "packed.data"
-    else:
-        source = pack
+    source = shipped or "packed.data"
+    if shipped is None:
+        run_lmp(d, "in.pack", dict(variables, output=source), log="log.pack")
     run_lmp(d, "in.consolidate", dict(variables, input=source, output="bed.data"),
             log="log.consolidate")
     return out
@@ -85,7 +83,7 @@ def bisect_mu_prep(work, jobs_map, low=0.0, high=0.4, rounds=3, tol=0.05, probe=
 
     def first_ours(mu):
         name = "probe_mu%.4f" % mu
-        data = prepare_bed(work, name, {"radius_spread": SPREAD, "mu_prep": mu}, True)
+        data = prepare_bed(work, name, {"radius_spread": SPREAD, "mu_prep": mu})
         height, phi = bed_geometry(data)
         z = first_coordination(work, name, data, bed_groups(height, phi))
         return mu, z, height, phi
