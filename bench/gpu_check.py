@@ -22,10 +22,10 @@ Parts (each run in its own folder under the work folder; lmp with and without AC
             roundoff, the accel runs' own difference a spread too
   growth    the reduced example tiled 1, 2, 4 times per side (1,200, 9,600, 76,800 grains;
             bench/step_cost.py's tiled) with ACCEL: us per step and per grain-step
-  host_styles  the Table S1-sized scene with ACCEL as it is and with the styles that run on
-            the host every step (the floor, the time series) replaced: what their copies
-            between host and device cost (timing only: the replacements change the run)
-  host_kernels  the kernel timer on that scene with both replaced (not run by default)
+  host_styles  the Table S1-sized scene with ACCEL as it is and with the style that runs on
+            the host every step (the time series) replaced: what its copies between host
+            and device cost (timing only: the replacement changes the run)
+  host_kernels  the kernel timer on that scene with it replaced (not run by default)
 Writes OUT/summary.md (the tables), OUT/gpu_check.json (every number), OUT/kernel_times.txt
 (and kernel_times_replaced.txt), OUT/logs.tar.gz (the runs' logs and time series) and
 OUT/machine.txt; exits 1 when a round-off check fails.
@@ -186,12 +186,10 @@ def part_table_s1(work, accel, hook, out, results):
 
 
 # the example's styles without a /kk variant that run every step, and what replaces each in
-# a timing-only variant: the floor (fix wall/gran; wall/reflect/kk instead, not the same
-# contact law) and the time series (fix print with a variable N is called every step; a
-# constant N, which repeats a row at each chunk's start)
+# a timing-only variant: the time series (fix print with a variable N is called every step;
+# a constant N, which repeats a row at each chunk's start). The floor, LAMMPS' wall/gran until
+# fix nve/sphere/bed took it over, is now part of that fix's /kk kernels.
 HOST_EVERY_STEP = {
-    "floor": ("fix floor all wall/gran hooke ${kn} NULL 0.0 NULL 0.0 0 zplane 0.0 NULL",
-              "fix floor all wall/reflect zlo EDGE"),
     "series": ("fix series all print v_next_row &", "fix series all print ${nout} &"),
 }
 HOST_STEPS = 5000
@@ -202,8 +200,7 @@ def part_host_styles(work, accel, results):
     _, scene = SCENES["table_s1"]
     variables = dict(scene, run_steps=HOST_STEPS)
     rows = []
-    for label, names in (("as it is", ()), ("floor replaced", ("floor",)),
-                         ("time series replaced", ("series",)), ("both replaced", ("floor", "series"))):
+    for label, names in (("as it is", ()), ("time series replaced", ("series",))):
         r = run(work, "host_" + "_".join(names or ("none",)), variables, accel,
                 edits=[HOST_EVERY_STEP[n] for n in names])
         rows.append((label, r["steps"], r["us_per_step"]))
@@ -211,7 +208,7 @@ def part_host_styles(work, accel, results):
 
 
 def part_host_kernels(work, accel, hook, out, results):
-    """the kernel timer on the Table S1-sized scene with both host styles replaced"""
+    """the kernel timer on the Table S1-sized scene with the host style replaced"""
     _, scene = SCENES["table_s1"]
     timer = {"KOKKOS_PROFILE_LIBRARY": hook, "KTIMES_OUT": os.path.join(out, "kernel_times_replaced.txt"),
              "KCOUNT_OUT": os.path.join(work, "kernel_counts_replaced.txt")}
@@ -300,8 +297,7 @@ def summary(results, accel):
         out += ["## Table S1-sized scene without the styles that run on the host every step "
                 "(timing only)", "", "| | steps | us per step |", "|---|---|---|"]
         out += ["| %s | %d | %.1f |" % row for row in results["host_styles"]]
-        out += ["", "floor replaced: `%s`; time series replaced: `%s`." % (
-            HOST_EVERY_STEP["floor"][1], HOST_EVERY_STEP["series"][1]), ""]
+        out += ["", "time series replaced: `%s`." % HOST_EVERY_STEP["series"][1], ""]
     if "growth" in results:
         out += ["## Growth (the reduced example tiled; -var fast 1)", "",
                 "| grains | steps | us per step | us per grain-step |", "|---|---|---|---|"]
@@ -309,7 +305,7 @@ def summary(results, accel):
         out.append("")
     if "host_kernels" in results:
         h = results["host_kernels"]
-        out += ["## Kernels of the Table S1-sized scene, both host styles replaced (kernel timer, "
+        out += ["## Kernels of the Table S1-sized scene, the host style replaced (kernel timer, "
                 "%d steps, %.1f us per step with the timer's waits; top 25)" % (h["steps"], h["us_per_step"]),
                 "", "| seconds | calls | us per call | kernel |", "|---|---|---|---|"]
         out += ["| %.4f | %d | %.1f | %s |" % (s, c, 1e6 * s / max(c, 1), n[:110]) for s, c, n in

@@ -19,10 +19,11 @@ builds compare exactly, beside other work. One rank: on several, MPI's collectiv
 while they wait, and a rank's count then holds its wait for the others (per-rank time is
 LAMMPS' timer's job, bench/time_to_solution.py).
 
-Usage (after scripts/setup.sh; each PLUGIN_DIR holds a porewater.so):
+Usage (after scripts/setup.sh; each PLUGIN_DIR holds a porewater.so; NAME=VALUE after it
+are further -var settings of that configuration, e.g. own=build/plugin,one_pass=0):
     source scripts/env.sh
     /usr/bin/python3 bench/step_cost.py [--scene reduced|table_s1] [--steps N]
-                                        [--markdown FILE] LABEL=PLUGIN_DIR ...
+                                        [--markdown FILE] LABEL=PLUGIN_DIR[,NAME=VALUE...] ...
     /usr/bin/python3 bench/step_cost.py --scene growth [--markdown FILE] LABEL=PLUGIN_DIR
 """
 import argparse
@@ -95,11 +96,25 @@ def prepare_scene(variables, work, env):
     return variables
 
 
-def profile(plugin_dir, scene, steps, work):
-    """the run loop's callgrind profile of a scene (grains, -var overrides)"""
+def with_settings(text):
+    """TEXT[,NAME=VALUE...]: (TEXT, {NAME: VALUE}), a configuration's own -var settings"""
+    head, *settings = text.split(",")
+    return head, dict(s.split("=", 1) for s in settings)
+
+
+def configuration(text):
+    """LABEL=PLUGIN_DIR[,NAME=VALUE...]: (label, absolute plugin folder, {NAME: VALUE})"""
+    label, rest = text.split("=", 1)
+    plugin, settings = with_settings(rest)
+    return label, os.path.abspath(plugin), settings
+
+
+def profile(plugin_dir, scene, steps, work, settings=None):
+    """the run loop's callgrind profile of a scene (grains, -var overrides), with the
+    configuration's own -var settings"""
     env = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false",
                LD_LIBRARY_PATH=plugin_dir + ":" + os.environ.get("LD_LIBRARY_PATH", ""))
-    variables = prepare_scene(scene[1], work, env)
+    variables = dict(prepare_scene(scene[1], work, env), **(settings or {}))
     args = ["-var", "run_steps", str(steps)]
     for k, v in variables.items():
         args += ["-var", k, str(v)]
@@ -166,22 +181,22 @@ def growth(plugin):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("builds", nargs="+", help="LABEL=PLUGIN_DIR")
+    ap.add_argument("builds", nargs="+", help="LABEL=PLUGIN_DIR[,NAME=VALUE...]")
     ap.add_argument("--scene", choices=sorted(SCENES) + ["growth"], default="reduced")
     ap.add_argument("--steps", type=int)
     ap.add_argument("--markdown", help="write the table here too")
     args = ap.parse_args()
     if args.scene == "growth":
-        (_, plugin), = (b.split("=", 1) for b in args.builds)
+        (_, plugin, _), = (configuration(b) for b in args.builds)
         lines = growth(plugin)
     else:
         grains, variables = SCENES[args.scene]
         steps = args.steps or (STEPS if args.scene == "reduced" else S1_STEPS)
         results = {}
-        for label, plugin in (b.split("=", 1) for b in args.builds):
+        for label, plugin, settings in (configuration(b) for b in args.builds):
             with tempfile.TemporaryDirectory() as work:
-                results[label] = sections(profile(os.path.abspath(plugin), SCENES[args.scene],
-                                                  steps, work))
+                results[label] = sections(profile(plugin, SCENES[args.scene], steps, work,
+                                                  settings))
         lines = ["Instructions of the run loop per grain-step of the scene (callgrind, "
                  "inclusive): %s, %s, one rank, %d steps of %d grains." % (
                      args.scene, " ".join("-var %s %s" % kv for kv in variables.items()),

@@ -10,10 +10,10 @@ example, -var fast 1), STEPS steps on RANKS ranks. Time is the machine's: run it
 
 Usage (source scripts/env.sh first):
     /usr/bin/python3 bench/step_time.py [--steps N] [--repeat K] [--markdown FILE] \
-        LABEL=PLUGIN_DIR[@COMMIT][#GRID] ...
+        LABEL=PLUGIN_DIR[@COMMIT][#GRID][,NAME=VALUE...] ...
 COMMIT: the example's inputs as of that commit (a build older than today's inputs); GRID:
 in.tidal_shear's -var processor_grid, e.g. '#2 1 1' (the grid LAMMPS used is read from
-its log).
+its log); NAME=VALUE: further -var settings of that configuration (e.g. ',one_pass=0').
 
     /usr/bin/python3 bench/step_time.py --growth [--repeat K] [--markdown FILE] \
         [--figure PNG] [--gpu-json JSON] PLUGIN_DIR      (PLUGIN_DIR "replot": the figure
@@ -34,7 +34,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 from example_runs import EXAMPLE, run_lmp    # noqa: E402
-from step_cost import SCENES, prepare_scene, tiled    # noqa: E402
+from step_cost import SCENES, prepare_scene, tiled, with_settings    # noqa: E402
 
 STEPS, RANKS, REPEAT = 20000, 2, 3
 # growth: copies per side -> steps (multiples of the time series' 575 and the fluid's 25)
@@ -43,11 +43,13 @@ SECTIONS = ("Pair", "Neigh", "Comm", "Output", "Modify", "Other")
 
 
 def parse_build(text):
-    """LABEL=PLUGIN_DIR[@COMMIT][#GRID] -> (label, plugin dir, commit or None, grid or None)"""
+    """LABEL=PLUGIN_DIR[@COMMIT][#GRID][,NAME=VALUE...] -> (label, plugin dir, commit or None,
+    grid or None, {NAME: VALUE})"""
     label, rest = text.split("=", 1)
+    rest, settings = with_settings(rest)
     rest, _, grid = rest.partition("#")
     plugin, _, commit = rest.partition("@")
-    return label, os.path.abspath(plugin), commit or None, grid or None
+    return label, os.path.abspath(plugin), commit or None, grid or None, settings
 
 
 def inputs_at(commit, work):
@@ -80,11 +82,11 @@ def timer_breakdown(log):
             grid.group(1) if grid else "?", "%s-%s" % nlocal[-1][2:0:-1] if nlocal else "?")
 
 
-def timed_scene(scene, plugin, commit, grid, steps, ranks):
-    """one run of a scene (a SCENES name, or -var overrides): (timer breakdown, load before,
-    load after)"""
+def timed_scene(scene, plugin, commit, grid, steps, ranks, settings=None):
+    """one run of a scene (a SCENES name, or -var overrides) with a configuration's own -var
+    settings: (timer breakdown, load before, load after)"""
     variables = SCENES[scene][1] if isinstance(scene, str) else scene
-    variables = dict(variables, run_steps=steps)
+    variables = dict(variables, run_steps=steps, **(settings or {}))
     if grid:
         variables["processor_grid"] = grid
     with tempfile.TemporaryDirectory() as work:
@@ -206,7 +208,7 @@ def growth_figure(rows, path, gpu=None):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("builds", nargs="+", help="LABEL=PLUGIN_DIR[@COMMIT][#GRID]")
+    ap.add_argument("builds", nargs="+", help="LABEL=PLUGIN_DIR[@COMMIT][#GRID][,NAME=VALUE...]")
     ap.add_argument("--scene", choices=sorted(SCENES), default="table_s1")
     ap.add_argument("--steps", type=int, default=STEPS)
     ap.add_argument("--ranks", type=int, default=RANKS)
@@ -239,9 +241,9 @@ def main():
     builds = [parse_build(b) for b in args.builds]
     results = {b[0]: [] for b in builds}
     for k in range(args.repeat):
-        for label, plugin, commit, grid in builds:
+        for label, plugin, commit, grid, settings in builds:
             results[label].append(timed_scene(args.scene, plugin, commit, grid, args.steps,
-                                              args.ranks))
+                                              args.ranks, settings))
             print("%s run %d: %.1f s" % (label, k + 1, results[label][-1][1]), flush=True)
     lines = ["LAMMPS' timer of bench/step_cost.py's scene `%s` (%s), "
              "%d steps on %d ranks, builds run in turn, %d times each." % (

@@ -18,6 +18,7 @@
 #include "input/settings.h"
 #include "lammps_compat.h"
 #include "lammps_input.h"
+#include "sphere_integrator.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -73,16 +74,7 @@ int FixNVESphereTY3::setmask()
 
 void FixNVESphereTY3::init()
 {
-  if (utils::strmatch(update->integrate_style, "^respa"))
-    error->all(FLERR, "Fix nve/sphere/ty3 does not support run_style respa");
-  const double *radius = atom->radius;
-  const int *mask = atom->mask;
-  int flag = 0;
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((mask[i] & groupbit) && radius[i] == 0.0) flag = 1;
-  int flagall = 0;
-  MPI_Allreduce(&flag, &flagall, 1, MPI_INT, MPI_MAX, world);
-  if (flagall) error->all(FLERR, "Fix nve/sphere/ty3 requires extended particles (radius > 0)");
+  porewater::check_sphere_integrator(lmp, groupbit, "Fix nve/sphere/ty3");
 
   // a backward difference over another step size is no jerk: start afresh
   if (update->dt != dt_of_history) forget_history();

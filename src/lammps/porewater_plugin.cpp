@@ -14,6 +14,7 @@
 #include "compute_darcy_grain.h"
 #include "fix_darcy_pressure.h"
 #include "fix_progress.h"
+#include "fix_nve_sphere_bed.h"
 #include "fix_nve_sphere_ty3.h"
 #include "fix_shear_stress.h"
 #include "fix_wall_stress.h"
@@ -21,6 +22,7 @@
 
 #ifdef LMP_KOKKOS
 #include "fix_darcy_pressure_kokkos.h"
+#include "fix_nve_sphere_bed_kokkos.h"
 #include "fix_nve_sphere_ty3_kokkos.h"
 #include "fix_shear_stress_kokkos.h"
 #include "fix_wall_stress_kokkos.h"
@@ -28,6 +30,7 @@
 #else
 namespace LAMMPS_NS {    // named by the registration, never instantiated without KOKKOS
 template <class> class FixDarcyPressureKokkos;
+template <class> class FixNVESphereBedKokkos;
 template <class> class FixNVESphereTY3Kokkos;
 template <class> class FixShearStressKokkos;
 template <class> class FixWallStressKokkos;
@@ -147,6 +150,8 @@ extern "C" void porewater_register_styles(void *lmp, void *handle, void *regfunc
       "shear/stress", "top layer as a rigid plate driven by a shear stress");
   r.add_fix<FixNVESphereTY3, FixNVESphereTY3Kokkos>(
       "nve/sphere/ty3", "third-order Taylor integrator of finite-size spheres");
+  r.add_fix<FixNVESphereBed, FixNVESphereBedKokkos>(
+      "nve/sphere/bed", "velocity Verlet of a bed with held base, gravity and floor in one pass");
   r.add_fix<FixDarcyPressure, FixDarcyPressureKokkos>(
       "darcy/pressure", "pore-water pressure on a Darcy grid, force on grains");
   r.add_host_compute<ComputeDarcyGrain>(

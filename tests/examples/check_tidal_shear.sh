@@ -32,9 +32,9 @@ cat > in.body_forces <<'EOF'
 variable run_steps index 2000
 include in.tidal_shear
 neigh_modify exclude type 1 1
-unfix floor
+unfix grains
+fix grains all nve/sphere/bed gravity ${g} bed
 unfix wall
-unfix hold
 unfix shear
 compute fz all property/atom fz
 compute fx_top top reduce sum f_darcy[1]

@@ -1,4 +1,5 @@
-// Scenes for the tests of fix wall/stress, shear/stress and nve/sphere/ty3, as LAMMPS input.
+// Scenes for the tests of fix wall/stress, shear/stress, nve/sphere/ty3 and nve/sphere/bed,
+// as LAMMPS input.
 #ifndef PW_TEST_FIX_WALLS_INPUTS_H
 #define PW_TEST_FIX_WALLS_INPUTS_H
 
@@ -109,6 +110,41 @@ inline std::string shear_plate(double tau, int nxy)
       std::to_string(nxy * nxy) + "\n";
 }
 inline std::string sheared_stack(double tau) { return pressed_layer(3) + shear_plate(tau, 3); }
+
+// ---- fix nve/sphere/bed ---------------------------------------------------------------
+
+// A loose bed of nxy × nxy × nz grains (spacing 1.05, jitter 0.02, random velocities) in a box
+// periodic in x and y, bounded (f) in z from 0 to 20, frictional contacts (kn = kt = 2000,
+// μ = 0.5). Group `bottom` is the lowest layer, 0.025 above the plane z = 0, `bed` the rest.
+// No fixes: the tests add the floor, gravity, the held base and the integrators.
+const double BED_KN = 2000.0;
+inline std::string loose_bed(int nxy = 5, int nz = 5)
+{
+  const std::string side = std::to_string(1.05 * nxy), top = std::to_string(1.05 * nz);
+  return "units lj\natom_style sphere\natom_modify map array\nboundary p p f\nnewton off\n"
+         "comm_modify vel yes\nlattice sc 0.863837598531476 origin 0.5 0.5 0.5\n"
+         "region box block 0 " + side + " 0 " + side + " 0 20 units box\ncreate_box 1 box\n"
+         "region stack block 0 " + side + " 0 " + side + " 0 " + top + " units box\n"
+         "create_atoms 1 region stack\n" + unit_grains +
+         "displace_atoms all random 0.02 0.02 0.02 8121 units box\n"
+         "velocity all create 1.0 8122 loop geom\n"
+         "region low block INF INF INF INF INF 1 units box\n"
+         "group bottom region low\ngroup bed subtract all bottom\n"
+         "velocity bottom set 0 0 0\n"
+         "pair_style linear/coulomb\npair_coeff * * 2000 2000 0.5\n"
+         "neighbor 0.2 bin\nneigh_modify delay 0 every 1 check yes\ntimestep 0.001\n";
+}
+
+// LAMMPS' own fixes for what fix nve/sphere/bed does in one: the floor (first), gravity on
+// the bed, the held base (setforce 0 0 NULL and nve), nve/sphere on the bed
+inline std::string bed_fixes_native(bool floor = true)
+{
+  return std::string(floor ? "fix floor all wall/gran hooke 2000 NULL 0.0 NULL 0.0 0 zplane 0.0 NULL\n"
+                           : "") +
+         "fix gravity bed gravity 1.0 vector 0 0 -1\n"
+         "fix hold bottom setforce 0.0 0.0 NULL\nfix move_bottom bottom nve\n"
+         "fix move bed nve/sphere\n";
+}
 
 }    // namespace pwtest
 

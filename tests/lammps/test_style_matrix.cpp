@@ -268,6 +268,43 @@ StyleCase fix_nve_sphere_ty3(const std::string &name, const std::string &integra
   return c;
 }
 
+// the loose bed settling onto its held base and the floor under fix nve/sphere/bed
+StyleCase fix_nve_sphere_bed()
+{
+  StyleCase c = named("FixNVESphereBed", "nve/sphere/bed", "grains", 1.05);
+  c.observables = {
+      // frictional contacts summed in another order (/kk) or over ranks (MPI): round-off
+      // amplified by 1000 steps of a bed falling onto its base
+      per_atom("x", 1e-9, 1e-9),
+      per_atom("v", 1e-8, 1e-8),
+      per_atom("omega", 1e-7, NOT_COMPARED),
+  };
+  const std::string fix = "fix grains all nve/sphere/bed held bottom gravity 1.0 bed floor 0.0 2000\n";
+  c.kokkos = {loose_bed(), fix, 1000};
+  c.mpi = {loose_bed(), fix, 1000};
+  // no state of its own: the restart carries the grains and the groups it names
+  c.restart = {{loose_bed(), fix, 500},
+               "newton off\n",
+               "comm_modify vel yes\nneighbor 0.2 bin\nneigh_modify delay 0 every 1 check yes\n",
+               fix};
+  c.bad_scene = loose_bed(3, 3);
+  const std::string bed = "fix grains all nve/sphere/bed ";
+  c.bad_inputs = {
+      {bed + "drag 1", "unknown keyword 'drag' (allowed: held, gravity, floor)"},
+      {bed + "held", "held expects a group ID, but the command ends there"},
+      {bed + "held base", "held names group base, which does not exist"},
+      {bed + "gravity down bed", "gravity expects a finite number, got 'down'"},
+      {bed + "gravity 1.0", "gravity group expects a group ID, but the command ends there"},
+      {bed + "gravity 1.0 sand", "gravity names group sand, which does not exist"},
+      {bed + "floor 0.0", "floor kn expects a number > 0, but the command ends there"},
+      {bed + "floor 0.0 -5", "floor kn expects a finite number > 0, got '-5'"},
+      {bed + "floor low 2000", "floor expects a finite number, got 'low'"},
+      {bed + "floor 0.0 2000", "requires atom_style sphere", "",
+       "units lj\natom_style atomic\nregion b block 0 4 0 4 0 4\ncreate_box 1 b\n"},
+  };
+  return c;
+}
+
 std::vector<StyleCase> cases()
 {
   StyleCase ty3 = fix_nve_sphere_ty3("FixNVESphereTY3", "nve/sphere/ty3");
@@ -293,7 +330,7 @@ std::vector<StyleCase> cases()
   };
   return {pair_linear_coulomb(), fix_darcy_pressure(), fix_darcy_pressure_relaxed(),
           fix_wall_stress("FixWallStress", "", ""),
-          dashpots, fix_shear_stress(), ty3, corrected};
+          dashpots, fix_shear_stress(), ty3, corrected, fix_nve_sphere_bed()};
 }
 
 }    // namespace

@@ -84,6 +84,27 @@ ShearStressSettings parse_shear_stress(KeywordReader &in)
   return s;
 }
 
+BedSettings parse_nve_sphere_bed(KeywordReader &in)
+{
+  BedSettings s;
+  while (!in.done()) {
+    const std::string &key = in.keyword();
+    if (key == "held") {
+      s.held_group = in.word("a group ID");
+    } else if (key == "gravity") {
+      s.gravity = in.number();
+      s.gravity_group = in.named("gravity group").word("a group ID");
+    } else if (key == "floor") {
+      s.z_floor = in.number();
+      s.kn = in.named("floor kn").positive();
+      s.floor = true;
+    } else {
+      in.unknown_keyword({"held", "gravity", "floor"});
+    }
+  }
+  return s;
+}
+
 ProgressSettings parse_progress(KeywordReader &in)
 {
   ProgressSettings s;

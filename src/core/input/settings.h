@@ -51,6 +51,17 @@ struct Ty3Settings {
 };
 Ty3Settings parse_ty3(KeywordReader &in);
 
+// fix ID group nve/sphere/bed [held GROUP] [gravity G GROUP] [floor Z0 KN]
+struct BedSettings {
+  std::string held_group;       // empty: none (these grains move along z only)
+  double gravity = 0.0;         // g, along −z, on gravity_group
+  std::string gravity_group;    // empty: no gravity
+  bool floor = false;           // a frictionless spring floor at z_floor
+  double z_floor = 0.0;
+  double kn = 0.0;
+};
+BedSettings parse_nve_sphere_bed(KeywordReader &in);
+
 // fix ID group progress end STEP [period T] [walltime HH:MM:SS|S|none] [safety F]
 struct ProgressSettings {
   long long end_step = 0;       // the last step of the whole run (as `run STEP upto`)

@@ -1,5 +1,6 @@
-// Grain–wall contact of fix wall/stress (doc/model.md §4), written once: the law, and the
-// per-grain kernel of the CPU and KOKKOS fixes over a grain accessor G (grains/host_grains.h).
+// Grain–wall contact of fix wall/stress (doc/model.md §4) and the floor of fix nve/sphere/bed,
+// written once: the laws, and the per-grain kernel of the CPU and KOKKOS wall/stress over a
+// grain accessor G (grains/host_grains.h).
 #ifndef PW_WALLS_WALL_CONTACT_H
 #define PW_WALLS_WALL_CONTACT_H
 
@@ -42,6 +43,17 @@ PW_INLINE WallContact wall_contact(const double z, const double radius, const do
   c.energy = 0.5 * kn * overlap * overlap;
   c.damping_z = c.force_z - spring;
   return c;
+}
+
+// The floor of fix nve/sphere/bed: a fixed, frictionless, undamped plane at z_floor (normal
+// +z) under a grain of centre height z and radius r. The linear spring k_n on the overlap
+// δ = z_floor + r − z > 0 pushes it up; LAMMPS' fix wall/gran hooke with γ_n = μ = 0 is the
+// same law, evaluated in another order (its force differs from this one by round-off).
+PW_INLINE double floor_force(const double z, const double radius, const double z_floor,
+                             const double kn)
+{
+  const double overlap = z_floor + radius - z;
+  return overlap > 0.0 ? kn * overlap : 0.0;
 }
 
 // A dashpot on the wall's own vertical velocity (keyword plate_damping): the force on the
