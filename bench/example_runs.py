@@ -23,9 +23,10 @@ FRICTIONLESS = {"bed": "frictionless"}
 
 
 def run_lmp(workdir, infile, variables, ranks=1, plugin_dir=None, log="log.lammps", args=(),
-            threads=1, extra_env=None):
+            threads=1, extra_env=None, launcher=()):
     """lmp -in infile in workdir (niced; `threads` OpenMP threads, extra lmp `args` such as
-    KOKKOS' -k on t 2 -sf kk, `extra_env` added to its environment); returns its CPU seconds."""
+    KOKKOS' -k on t 2 -sf kk, `extra_env` added to its environment, `launcher` a command it
+    runs under, such as a profiler); returns its CPU seconds."""
     # OMP_PROC_BIND (scripts/env.sh: spread) pins a 1-thread run to core 0: concurrent runs
     # would share that core
     env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND="false",
@@ -33,7 +34,7 @@ def run_lmp(workdir, infile, variables, ranks=1, plugin_dir=None, log="log.lammp
     if plugin_dir:
         env["LD_LIBRARY_PATH"] = plugin_dir + ":" + env.get("LD_LIBRARY_PATH", "")
     env.update(extra_env or {})
-    cmd = ["nice", "-n", "10"]
+    cmd = ["nice", "-n", "10"] + list(launcher)
     if ranks > 1:
         cmd += ["mpirun", "--oversubscribe", "-np", str(ranks), "-x", "LD_LIBRARY_PATH", "-x", "OMP_PROC_BIND"]
     cmd += ["lmp", "-in", infile, "-log", log, "-screen", "none"] + list(args)
