@@ -49,7 +49,7 @@ FixShearStress::~FixShearStress() = default;
 
 int FixShearStress::setmask()
 {
-  return POST_FORCE;
+  return PRE_NEIGHBOR | POST_FORCE;
 }
 
 void FixShearStress::init()
@@ -69,7 +69,13 @@ porewater::PlateStep FixShearStress::now() const
 
 void FixShearStress::setup(int /*vflag*/)
 {
+  members.invalidate();    // a run may start with grains moved, added, sorted or regrouped
   plate->setup(*this, now());
+}
+
+void FixShearStress::pre_neighbor()
+{
+  members.invalidate();
 }
 
 void FixShearStress::post_force(int /*vflag*/)
@@ -89,7 +95,12 @@ porewater::ImageUnwrap FixShearStress::image_unwrap() const
 
 porewater::SerialPlateGrains<porewater::HostGrains<imageint>> FixShearStress::plate_grains() const
 {
-  return porewater::serial_plate_grains(porewater::grains_of_atom(atom), atom->nlocal, groupbit, image_unwrap());
+  const auto grains = porewater::grains_of_atom(atom);
+  if (!update->whichflag)    // between runs grains may have changed since the list
+    return porewater::serial_plate_grains(grains, atom->nlocal, groupbit, image_unwrap());
+  if (!members.valid())
+    members.rebuild(atom->nlocal, [&](int i) { return (grains.mask(i) & groupbit) != 0; });
+  return porewater::serial_plate_grains(grains, atom->nlocal, groupbit, image_unwrap(), &members);
 }
 
 void FixShearStress::plate_sums(double *sums)

@@ -23,6 +23,7 @@ class FixShearStress : public Fix, protected porewater::RigidPlateHost {
   int setmask() override;
   void init() override;
   void setup(int) override;
+  void pre_neighbor() override;
   void post_force(int) override;
   double compute_vector(int) override;
   void write_restart(FILE *) override;
@@ -33,8 +34,10 @@ class FixShearStress : public Fix, protected porewater::RigidPlateHost {
 
   porewater::ImageUnwrap image_unwrap() const;
   porewater::PlateStep now() const;
-  // the core's plate kernels over the local grains (CPU)
+  // the core's plate kernels over the local grains (CPU): during a run over the group's
+  // grains listed at the last re-neighboring or setup, between runs over every grain
   porewater::SerialPlateGrains<porewater::HostGrains<imageint>> plate_grains() const;
+  mutable porewater::GrainList members;
 
   // porewater::RigidPlateHost; the KOKKOS variant runs the plate kernels as Kokkos kernels
   void plate_sums(double *sums) override;

@@ -15,6 +15,7 @@
 #include "domain.h"
 #include "error.h"
 #include "group.h"
+#include "neighbor.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -54,7 +55,7 @@ FixWallStress::~FixWallStress() = default;
 
 int FixWallStress::setmask()
 {
-  return INITIAL_INTEGRATE | POST_FORCE | FINAL_INTEGRATE;
+  return INITIAL_INTEGRATE | PRE_NEIGHBOR | POST_FORCE | FINAL_INTEGRATE;
 }
 
 void FixWallStress::init()
@@ -68,8 +69,14 @@ void FixWallStress::init()
 
 void FixWallStress::setup(int vflag)
 {
+  reach.invalidate();    // a run may start with grains moved, added or sorted
   v_init(vflag);
   wall->setup(*this, update->ntimestep);
+}
+
+void FixWallStress::pre_neighbor()
+{
+  reach.invalidate();
 }
 
 void FixWallStress::initial_integrate(int /*vflag*/)
@@ -100,8 +107,16 @@ double FixWallStress::stress_now()
 
 void FixWallStress::grain_contacts(double *sums)
 {
-  porewater::sum_over_grains(
-      atom->nlocal,
+  const double z_wall = wall->z(), margin = neighbor->skin;
+  if (!reach.valid() || z_wall < reach_wall_z - 0.5 * margin) {
+    const auto grains = porewater::grains_of_atom(atom);
+    reach.rebuild(atom->nlocal, [&](int i) {
+      return (grains.mask(i) & groupbit) && grains.x(i, 2) + grains.radius(i) > z_wall - margin;
+    });
+    reach_wall_z = z_wall;
+  }
+  porewater::sum_over_listed(
+      reach,
       wall->contacts(porewater::grains_of_atom(atom),
                      porewater::PerAtomVirialZZ{evflag && vflag_atom ? vatom : nullptr}, groupbit),
       sums);

@@ -10,6 +10,7 @@
 
 #include "fix.h"
 
+#include "grains/grain_list.h"
 #include "lammps_input.h"
 #include "walls/stress_wall.h"
 
@@ -24,6 +25,7 @@ class FixWallStress : public Fix, protected porewater::StressWallHost {
   int setmask() override;
   void init() override;
   void setup(int) override;
+  void pre_neighbor() override;
   void initial_integrate(int) override;
   void post_force(int) override;
   void final_integrate() override;
@@ -39,8 +41,15 @@ class FixWallStress : public Fix, protected porewater::StressWallHost {
 
   // the grain-wall contacts of the local grains (StressWall::contacts): forces added to
   // the grains, sums = {force on the wall, spring energy, zz virial}; the KOKKOS variant
-  // runs them as a kernel
+  // runs them as a kernel over every grain
   virtual void grain_contacts(double *sums);
+
+  // the CPU fix visits only the grains within reach: those whose top was above
+  // z_w − skin when the list was built (at z_w = reach_wall_z). Until LAMMPS re-neighbors no
+  // grain moves more than skin/2, so the list holds every grain that can touch the wall
+  // while the wall stays above reach_wall_z − skin/2; below, it is built again
+  porewater::GrainList reach;
+  double reach_wall_z = 0.0;
 
   // porewater::StressWallHost
   double stress_now() override;

@@ -53,6 +53,37 @@ TEST(FixShearStress, FreeLayerMovesAsOneRigidPlate)
   }
 }
 
+// The CPU fix visits the plate's grains listed at the last re-neighboring: LAMMPS sorts and
+// moves grains only then. Six grains outside the group sit between the plate's in its rows
+// and stream by at v_x = -3, so that LAMMPS re-neighbors every ~33 steps and sorts the
+// grains each time (atom_modify sort 1: by x within a row, so the two kinds trade places in
+// memory): the plate still accelerates at exactly τA/M, and the others feel nothing.
+TEST(FixShearStress, PlateFollowsItsGrainsThroughSorting)
+{
+  Lammps l;
+  free_layer(l, "nve/sphere");
+  for (const char *site : {"2 1 1", "4 1 1", "0 1 1", "2 3 1", "4 3 1", "0 3 1"})
+    l.command(std::string("create_atoms 1 single ") + site + " units box");
+  l.commands("group other id 7:12\ngroup plate subtract all other\n" + pwtest::unit_grains +
+             "velocity other set -3.0 0.0 0.0 units box\n"
+             "atom_modify sort 1 0.5\nneigh_modify delay 0 every 1 check yes\n"
+             "fix s plate shear/stress tau 0.5 mass 12\nrun 0");
+  const auto x0 = l.unwrapped();
+  std::vector<int> index0;
+  for (long tag = 1; tag <= 12; tag++) index0.push_back(l.atom()->map(tag));
+  l.command("run 1000");
+  const auto x = l.unwrapped();
+  int moved_in_memory = 0;
+  for (long tag = 1; tag <= 12; tag++) moved_in_memory += l.atom()->map(tag) != index0[tag - 1];
+  EXPECT_GT(moved_in_memory, 0);    // the grains were sorted
+  ASSERT_EQ(x.size(), 12u);
+  for (const auto &kv : x) {
+    const bool in_plate = kv.first <= 6;
+    // t = 1: the plate moved a t²/2 = 0.5, the others -3 t (exact up to round-off)
+    EXPECT_NEAR(kv.second[0], x0.at(kv.first)[0] + (in_plate ? 0.5 : -3.0), 1e-12) << kv.first;
+  }
+}
+
 TEST(FixShearStress, ForcesOnTheLayerResistTheShear)
 {
   // fix addforce (defined before shear/stress) pulls each of the 6 grains by −0.1 in x:

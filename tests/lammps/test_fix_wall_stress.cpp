@@ -1,5 +1,5 @@
 // fix wall/stress and wall/stress/kk: free fall under a constant and a ramped stress,
-// equilibrium on a cubic stack, the dashpots (on the plate; on the grains relative to it or
+// equilibrium on a cubic stack, the grains within reach (CPU), the dashpots (on the plate; on the grains relative to it or
 // in the lab frame), the virial (also of /kk), a wall leaving the box, a tidal stress near
 // zero. KOKKOS, MPI, restarts and input errors: the style matrix
 // (test_style_matrix.cpp).
@@ -97,6 +97,37 @@ TEST(FixWallStress, WallOnCubicStackCarriesTheAppliedStress)
   const double volume = 3.0 * 3.0 * 8.0;
   ASSERT_GT(expected, 0.0);
   EXPECT_NEAR((with_wall - without_wall) * volume, expected, 1e-9 * expected);
+}
+
+// The CPU fix visits only the grains within reach of the wall, listed when LAMMPS
+// re-neighbors and again whenever the wall has come down by half the skin since. A wall
+// dropped from 4 above the stack's top falls onto grains at rest (nothing re-neighbors: the
+// list is rebuilt by the wall's own travel, 40 times) and rings on them: it moves exactly
+// as when every step re-neighbors (the list built anew each step), bit for bit.
+TEST(FixWallStress, WallFallingOntoGrainsAtRestMovesAsWithListsBuiltEveryStep)
+{
+  auto fall = [](const std::string &neigh) {
+    Lammps l;
+    l.commands(pwtest::cubic_stack(3, 3, 4, 10.0, STACK_KN) + neigh + "\ntimestep 5e-4\n"
+               "fix hold bottom setforce 0 0 0\nfix integrate all nve/sphere\n"
+               "fix w all wall/stress z 8 stress 10 mass 9 kn 1e4 damping 100\n"
+               "variable zw equal f_w[1]\nvariable fw equal f_w[3]\n");
+    std::vector<double> path;
+    for (int k = 0; k < 30; k++) {
+      l.command("run 100");
+      path.push_back(l.equal("v_zw"));
+      path.push_back(l.equal("v_fw"));
+    }
+    return path;
+  };
+  const auto listed = fall("neigh_modify delay 0 every 1 check yes");
+  const auto every_step = fall("neigh_modify delay 0 every 1 check no");
+  EXPECT_EQ(listed, every_step);
+  // it reached the grains and pressed on them: the wall below the stack's top (4)
+  EXPECT_LT(*std::min_element(listed.begin(), listed.end()), 4.0);
+  double pressed = 0.0;
+  for (size_t k = 1; k < listed.size(); k += 2) pressed = std::max(pressed, listed[k]);
+  EXPECT_GT(pressed, 1.0);
 }
 
 TEST(FixWallStress, PlateDampingGivesTheTerminalVelocity)

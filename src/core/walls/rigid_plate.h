@@ -9,6 +9,7 @@
 #ifndef PW_WALLS_RIGID_PLATE_H
 #define PW_WALLS_RIGID_PLATE_H
 
+#include "grains/grain_list.h"
 #include "grains/host_grains.h"
 #include "input/restart_state.h"
 #include "input/settings.h"
@@ -38,33 +39,43 @@ class RigidPlateHost {
   ~RigidPlateHost() = default;
 };
 
-// The plate kernels of a CPU host, serial loops over its grains G (grains/host_grains.h);
-// the KOKKOS fix runs the same kernels as Kokkos kernels.
+// The plate kernels of a CPU host, serial loops over its grains G (grains/host_grains.h):
+// every grain [0, n), each with its mask tested, or the group's grains listed in `members`
+// (grains/grain_list.h); the KOKKOS fix runs the same kernels as Kokkos kernels.
 template <class G> struct SerialPlateGrains {
   G grains;
   int n, groupbit;
   ImageUnwrap unwrap;
-  void plate_sums(double *sums) const
-  {
-    sum_over_grains(n, PlateSums<G>{grains, groupbit, unwrap}, sums);
-  }
-  void momentum_sums(double *sums) const
-  {
-    sum_over_grains(n, PlateMomentum<G>{grains, groupbit}, sums);
-  }
+  const GrainList *members;    // nullptr: every grain
+  void plate_sums(double *sums) const { sum(PlateSums<G>{grains, groupbit, unwrap}, sums); }
+  void momentum_sums(double *sums) const { sum(PlateMomentum<G>{grains, groupbit}, sums); }
   void move_as_plate(double force_per_mass) const
   {
-    for_each_grain(n, PlateMotion<G>{grains, groupbit, force_per_mass});
+    each(PlateMotion<G>{grains, groupbit, force_per_mass});
   }
-  void set_velocity_x(double velocity) const
+  void set_velocity_x(double velocity) const { each(PlateVelocity<G>{grains, groupbit, velocity}); }
+
+ private:
+  template <class Body> void sum(const Body &body, double *sums) const
   {
-    for_each_grain(n, PlateVelocity<G>{grains, groupbit, velocity});
+    if (members)
+      sum_over_listed(*members, body, sums);
+    else
+      sum_over_grains(n, body, sums);
+  }
+  template <class Body> void each(const Body &body) const
+  {
+    if (members)
+      for_each_listed(*members, body);
+    else
+      for_each_grain(n, body);
   }
 };
 template <class G>
-SerialPlateGrains<G> serial_plate_grains(const G &grains, int n, int groupbit, const ImageUnwrap &unwrap)
+SerialPlateGrains<G> serial_plate_grains(const G &grains, int n, int groupbit, const ImageUnwrap &unwrap,
+                                         const GrainList *members = nullptr)
 {
-  return SerialPlateGrains<G>{grains, n, groupbit, unwrap};
+  return SerialPlateGrains<G>{grains, n, groupbit, unwrap, members};
 }
 
 // Where the host's time integration stands in post_force.

@@ -93,6 +93,7 @@ class StressWall {
                                           settings_.damping_velocity};
   }
 
+  double z() const { return z_wall_; }
   double scalar() const { return spring_energy_; }
   double vector(int n, double area) const;
   double *extract(const std::string &name);    // z_wall, v_wall; nullptr otherwise
