@@ -29,6 +29,7 @@ are further -var settings of that configuration, e.g. own=build/plugin,one_pass=
 import argparse
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -82,13 +83,16 @@ def inclusive_counts(profile):
     return counts
 
 
-def prepare_scene(variables, work, env):
-    """the example's inputs in work and a scene's bed (its `data`, the default bed tiled
-    `copies` times per side, 2 unless given); the -var overrides for in.tidal_shear"""
+def prepare_scene(variables, work, env, bed=None):
+    """the example's inputs in work and a scene's bed (its `data`: the file `bed` if given,
+    else the default bed tiled `copies` times per side, 2 unless given); the -var overrides
+    for in.tidal_shear"""
     variables = dict(variables)
     copies = variables.pop("copies", 2)
     prepare(work, ["in.replicate_bed"])
-    if "data" in variables:
+    if bed:
+        shutil.copy(bed, os.path.join(work, variables["data"]))
+    elif "data" in variables:
         subprocess.run(["lmp", "-in", "in.replicate_bed", "-log", "none", "-screen", "none",
                         "-var", "out", variables["data"]] + sum(
                             (["-var", n, str(copies)] for n in ("nx", "ny", "nz")), []),

@@ -82,16 +82,16 @@ def timer_breakdown(log):
             grid.group(1) if grid else "?", "%s-%s" % nlocal[-1][2:0:-1] if nlocal else "?")
 
 
-def timed_scene(scene, plugin, commit, grid, steps, ranks, settings=None):
+def timed_scene(scene, plugin, commit, grid, steps, ranks, settings=None, bed=None):
     """one run of a scene (a SCENES name, or -var overrides) with a configuration's own -var
-    settings: (timer breakdown, load before, load after)"""
+    settings, on the bed file `bed` if given: (timer breakdown, load before, load after)"""
     variables = SCENES[scene][1] if isinstance(scene, str) else scene
     variables = dict(variables, run_steps=steps, **(settings or {}))
     if grid:
         variables["processor_grid"] = grid
     with tempfile.TemporaryDirectory() as work:
         env = dict(os.environ, LD_LIBRARY_PATH=plugin + ":" + os.environ.get("LD_LIBRARY_PATH", ""))
-        variables = prepare_scene(variables, work, env)
+        variables = prepare_scene(variables, work, env, bed)
         if commit:
             inputs_at(commit, work)
         load_before = os.getloadavg()[0]
@@ -211,6 +211,8 @@ def main():
     ap.add_argument("builds", nargs="+", help="LABEL=PLUGIN_DIR[@COMMIT][#GRID][,NAME=VALUE...]")
     ap.add_argument("--scene", choices=sorted(SCENES), default="table_s1")
     ap.add_argument("--steps", type=int, default=STEPS)
+    ap.add_argument("--bed", help="the scene's grains from this data file (e.g. the prepared "
+                    "Table S1 bed, fidelity_full.prepare_full) instead of the replicated bed")
     ap.add_argument("--ranks", type=int, default=RANKS)
     ap.add_argument("--repeat", type=int, default=REPEAT)
     ap.add_argument("--markdown", help="write the table here too")
@@ -243,11 +245,12 @@ def main():
     for k in range(args.repeat):
         for label, plugin, commit, grid, settings in builds:
             results[label].append(timed_scene(args.scene, plugin, commit, grid, args.steps,
-                                              args.ranks, settings))
+                                              args.ranks, settings, args.bed and os.path.abspath(args.bed)))
             print("%s run %d: %.1f s" % (label, k + 1, results[label][-1][1]), flush=True)
-    lines = ["LAMMPS' timer of bench/step_cost.py's scene `%s` (%s), "
+    lines = ["LAMMPS' timer of bench/step_cost.py's scene `%s` (%s)%s, "
              "%d steps on %d ranks, builds run in turn, %d times each." % (
                  args.scene, " ".join("-var %s %s" % kv for kv in SCENES[args.scene][1].items()),
+                 " on the bed %s" % os.path.basename(args.bed) if args.bed else "",
                  args.steps, args.ranks, args.repeat), ""] + table(results, args.steps)
     print("\n".join(lines))
     if args.markdown:

@@ -2,7 +2,8 @@
 // fix and its KOKKOS variant over a grain accessor G (grains/host_grains.h). One pass over
 // the grains does what LAMMPS' own fixes do in six (wall/gran as a floor, gravity, setforce
 // 0 0 NULL with nve on the held base, nve/sphere on the rest), with their arithmetic, so
-// that the grains move bit for bit as under those fixes (the floor: walls/wall_contact.h).
+// that the grains move bit for bit as under those fixes; the floor's law
+// (walls/wall_contact.h) is wall/gran's evaluated in another order, equal to round-off.
 #ifndef PW_INTEGRATE_BED_PASS_H
 #define PW_INTEGRATE_BED_PASS_H
 
