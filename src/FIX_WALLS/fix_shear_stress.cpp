@@ -69,13 +69,20 @@ porewater::PlateStep FixShearStress::now() const
 
 void FixShearStress::setup(int /*vflag*/)
 {
-  members.invalidate();    // a run may start with grains moved, added, sorted or regrouped
+  list_members();    // a run may start with grains moved, added, sorted or regrouped
   plate->setup(*this, now());
 }
 
+// after LAMMPS has exchanged and sorted the grains, before the step's forces
 void FixShearStress::pre_neighbor()
 {
-  members.invalidate();
+  list_members();
+}
+
+void FixShearStress::list_members()
+{
+  const int *mask = atom->mask;
+  members.rebuild(atom->nlocal, [&](int i) { return (mask[i] & groupbit) != 0; });
 }
 
 void FixShearStress::post_force(int /*vflag*/)
@@ -95,12 +102,9 @@ porewater::ImageUnwrap FixShearStress::image_unwrap() const
 
 porewater::SerialPlateGrains<porewater::HostGrains<imageint>> FixShearStress::plate_grains() const
 {
-  const auto grains = porewater::grains_of_atom(atom);
-  if (!update->whichflag)    // between runs grains may have changed since the list
-    return porewater::serial_plate_grains(grains, atom->nlocal, groupbit, image_unwrap());
-  if (!members.valid())
-    members.rebuild(atom->nlocal, [&](int i) { return (grains.mask(i) & groupbit) != 0; });
-  return porewater::serial_plate_grains(grains, atom->nlocal, groupbit, image_unwrap(), &members);
+  // between runs (an output of the vector) grains may have changed since the list
+  return porewater::serial_plate_grains(porewater::grains_of_atom(atom), atom->nlocal, groupbit,
+                                        image_unwrap(), update->whichflag ? &members : nullptr);
 }
 
 void FixShearStress::plate_sums(double *sums)

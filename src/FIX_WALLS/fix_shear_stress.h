@@ -37,7 +37,8 @@ class FixShearStress : public Fix, protected porewater::RigidPlateHost {
   // the core's plate kernels over the local grains (CPU): during a run over the group's
   // grains listed at the last re-neighboring or setup, between runs over every grain
   porewater::SerialPlateGrains<porewater::HostGrains<imageint>> plate_grains() const;
-  mutable porewater::GrainList members;
+  porewater::GrainList members;
+  void list_members();
 
   // porewater::RigidPlateHost; the KOKKOS variant runs the plate kernels as Kokkos kernels
   void plate_sums(double *sums) override;

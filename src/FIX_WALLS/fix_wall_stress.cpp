@@ -107,9 +107,9 @@ double FixWallStress::stress_now()
 
 void FixWallStress::grain_contacts(double *sums)
 {
+  const auto grains = porewater::grains_of_atom(atom);
   const double z_wall = wall->z(), margin = neighbor->skin;
   if (!reach.valid() || z_wall < reach_wall_z - 0.5 * margin) {
-    const auto grains = porewater::grains_of_atom(atom);
     reach.rebuild(atom->nlocal, [&](int i) {
       return (grains.mask(i) & groupbit) && grains.x(i, 2) + grains.radius(i) > z_wall - margin;
     });
@@ -117,8 +117,8 @@ void FixWallStress::grain_contacts(double *sums)
   }
   porewater::sum_over_listed(
       reach,
-      wall->contacts(porewater::grains_of_atom(atom),
-                     porewater::PerAtomVirialZZ{evflag && vflag_atom ? vatom : nullptr}, groupbit),
+      wall->contacts(grains, porewater::PerAtomVirialZZ{evflag && vflag_atom ? vatom : nullptr},
+                     groupbit),
       sums);
 }
 

@@ -135,12 +135,17 @@ inline std::string loose_bed(int nxy = 5, int nz = 5)
          "neighbor 0.2 bin\nneigh_modify delay 0 every 1 check yes\ntimestep 0.001\n";
 }
 
-// LAMMPS' own fixes for what fix nve/sphere/bed does in one: the floor (first), gravity on
-// the bed, the held base (setforce 0 0 NULL and nve), nve/sphere on the bed
-inline std::string bed_fixes_native(bool floor = true)
+// LAMMPS' frictionless, undamped floor at z = 0 of stiffness kn (the bed's 2000 unless given)
+inline std::string native_floor(const std::string &kn = "2000")
 {
-  return std::string(floor ? "fix floor all wall/gran hooke 2000 NULL 0.0 NULL 0.0 0 zplane 0.0 NULL\n"
-                           : "") +
+  return "fix floor all wall/gran hooke " + kn + " NULL 0.0 NULL 0.0 0 zplane 0.0 NULL\n";
+}
+
+// LAMMPS' own fixes for what fix nve/sphere/bed does in one: the floor `floor` (first),
+// gravity on the bed, the held base (setforce 0 0 NULL and nve), nve/sphere on the bed
+inline std::string bed_fixes_native(const std::string &floor = native_floor())
+{
+  return floor +
          "fix gravity bed gravity 1.0 vector 0 0 -1\n"
          "fix hold bottom setforce 0.0 0.0 NULL\nfix move_bottom bottom nve\n"
          "fix move bed nve/sphere\n";

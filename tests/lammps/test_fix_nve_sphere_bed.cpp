@@ -31,7 +31,6 @@ Motion settle(const std::string &fixes, int steps)
   return {l.gather3("x"), l.gather3("v"), l.gather3("omega")};
 }
 
-const std::string FLOOR = "fix floor all wall/gran hooke 2000 NULL 0.0 NULL 0.0 0 zplane 0.0 NULL\n";
 const std::string BED = "fix grains all nve/sphere/bed held bottom gravity 1.0 bed";
 const int STEPS = 3000;    // the bed falls onto its base, which is pushed onto the floor
 
@@ -42,7 +41,7 @@ const int STEPS = 3000;    // the bed falls onto its base, which is pushed onto 
 TEST(FixNVESphereBed, MovesGrainsBitForBitAsLammpsOwnFixes)
 {
   const Motion native = settle(pwtest::bed_fixes_native(), STEPS);
-  const Motion ours = settle(FLOOR + BED + "\n", STEPS);
+  const Motion ours = settle(pwtest::native_floor() + BED + "\n", STEPS);
   EXPECT_EQ(ours.x, native.x);
   EXPECT_EQ(ours.v, native.v);
   EXPECT_EQ(ours.omega, native.omega);
@@ -93,14 +92,14 @@ TEST(FixNVESphereBed, FloorPushesAsWallGranHooke)
                "run 0");
     return std::make_pair(l.gather3("f"), l.gather3("x"));
   };
-  const auto native = floor_forces(FLOOR);
+  const auto native = floor_forces(pwtest::native_floor());
   const auto ours = floor_forces("fix grains all nve/sphere/bed floor 0.0 2000\n");
   for (const auto &kv : ours.first) {
     const double z = ours.second.at(kv.first)[2];
     const double expected = z < 0.5 ? pwtest::BED_KN * (0.5 - z) : 0.0;
     EXPECT_EQ(kv.second[0], 0.0);
     EXPECT_EQ(kv.second[1], 0.0);
-    EXPECT_EQ(kv.second[2], z < 0.5 ? pwtest::BED_KN * (0.0 + 0.5 - z) : 0.0) << "z " << z;
+    EXPECT_EQ(kv.second[2], expected) << "z " << z;    // floor_force's own arithmetic
     // the native force: 4 ulps of the largest force (k_n · 0.2 = 400)
     EXPECT_NEAR(native.first.at(kv.first)[2], expected, 4 * 2.2e-16 * 400.0) << "z " << z;
     EXPECT_NEAR(kv.second[2], native.first.at(kv.first)[2], 4 * 2.2e-16 * 400.0) << "z " << z;
@@ -117,10 +116,7 @@ TEST(FixNVESphereBed, WithItsFloorMovesGrainsAsLammpsOwnFixesToRoundOff)
   const Motion native = settle(pwtest::bed_fixes_native(), STEPS);
   double spread = 0.0;
   for (const char *kn : {"2000.0000000000002", "1999.9999999999998"}) {
-    const Motion ulp = settle("fix floor all wall/gran hooke " + std::string(kn) +
-                                  " NULL 0.0 NULL 0.0 0 zplane 0.0 NULL\n" +
-                                  pwtest::bed_fixes_native(false),
-                              STEPS);
+    const Motion ulp = settle(pwtest::bed_fixes_native(pwtest::native_floor(kn)), STEPS);
     spread = std::max(spread, pwtest::max_abs_diff(ulp.x, native.x));
   }
   const Motion ours = settle(BED + std::string(" floor 0.0 2000\n"), STEPS);

@@ -1,8 +1,8 @@
 // The local grains a CPU host's per-step loop visits, kept between re-neighborings: LAMMPS
 // moves, sorts and exchanges grains only when it re-neighbors, so a list of their indices
-// built then stays true until the next one. A fix invalidates it in pre_neighbor and setup
-// and rebuilds it on its next use; the loops visit the listed grains in index order, so
-// their sums add what a loop over every grain adds, in the same order.
+// built then stays true until the next one. A fix builds it in pre_neighbor and setup, or
+// invalidates it there and rebuilds it on its next use; the loops visit the listed grains in
+// index order, so their sums add what a loop over every grain adds, in the same order.
 #ifndef PW_GRAINS_GRAIN_LIST_H
 #define PW_GRAINS_GRAIN_LIST_H
 
