@@ -4,7 +4,8 @@
 // Coulomb cap, pairs that just opened, more contacts than one buffer holds, and two grain
 // types: forces, torques, springs, touch flags, the broken contacts named and the pairs
 // tallied must be the same to the bit (the same operations in the same order); the
-// dissipation, summed in another order, to round-off.
+// dissipation, summed in another order, to round-off. Each SIMD copy of the law (AVX2,
+// AVX-512) that this CPU runs gives the scalar law's values to the bit.
 #include "sweep_policy.h"
 
 #include <gtest/gtest.h>
@@ -191,4 +192,88 @@ TEST(ContactBlock, ANonFiniteDistanceIsABrokenContactAsInTheOneGrainSweep)
   for (const auto &b : block.g.broken) names_it |= b.first == lost || b.second == lost;
   EXPECT_TRUE(names_it);
   EXPECT_EQ(one.g.broken, block.g.broken);
+}
+
+namespace {
+
+// n rows of closed contacts: overlaps up to 5 % of the radii, springs of every length (none,
+// inside the cap, far beyond it), velocities and spins of either sign
+void random_rows(ContactBlock &b, const int n, std::mt19937 &rng)
+{
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int r = 0; r < n; r++) {
+    b.radi[r] = 0.5 + 0.05 * u(rng);
+    b.radj[r] = 0.5 + 0.05 * u(rng);
+    const double dist = (b.radi[r] + b.radj[r]) * (0.975 + 0.025 * u(rng));
+    double n3[3] = {u(rng), u(rng), u(rng)};
+    const double len = std::sqrt(n3[0] * n3[0] + n3[1] * n3[1] + n3[2] * n3[2]) + 1e-3;
+    b.delx[r] = dist * n3[0] / len;
+    b.dely[r] = dist * n3[1] / len;
+    b.delz[r] = dist * n3[2] / len;
+    const double spring = r % 5 == 0 ? 0.0 : r % 5 == 1 ? 10.0 : 1e-3;
+    for (int d = 0; d < 3; d++) {
+      b.vr[d][r] = u(rng);
+      b.wi[d][r] = u(rng);
+      b.wj[d][r] = u(rng);
+      b.xi[d][r] = spring * u(rng);
+    }
+    b.kn[r] = 1e3 * (1.5 + u(rng));
+    b.kt[r] = 1e3 * (1.5 + u(rng));
+    b.mu[r] = r % 7 == 0 ? 0.0 : 0.3 + 0.2 * u(rng);
+    b.frictional[r] = is_frictionless(b.kt[r], b.mu[r]) ? 0 : 1;
+  }
+}
+
+void expect_same_rows(const ContactBlock &a, const ContactBlock &b, const int n)
+{
+  for (int r = 0; r < n; r++) {
+    for (int d = 0; d < 3; d++) {
+      ASSERT_EQ(a.f[d][r], b.f[d][r]) << "force, row " << r;
+      ASSERT_EQ(a.tor_i[d][r], b.tor_i[d][r]) << "torque on i, row " << r;
+      ASSERT_EQ(a.tor_j[d][r], b.tor_j[d][r]) << "torque on j, row " << r;
+      ASSERT_EQ(a.xi[d][r], b.xi[d][r]) << "spring, row " << r;
+    }
+    ASSERT_EQ(a.overlap[r], b.overlap[r]) << "overlap, row " << r;
+    ASSERT_EQ(a.xisq_before[r], b.xisq_before[r]) << "spring before the cap, row " << r;
+  }
+}
+
+}    // namespace
+
+TEST(ContactBlock, EverySimdCopyOfTheLawGivesTheScalarLawsValues)
+{
+  // 61 rows: the vector loops' remainders too; uniform coefficients (the SIMD loop) in every
+  // switch of the step, and per-row ones (each row's own friction)
+  std::mt19937 rng(17);
+  const char *names[] = {"baseline", "AVX2", "AVX-512"};
+  int copies_run = 0;
+  for (SimdCopy copy : {SimdCopy::baseline, SimdCopy::avx2, SimdCopy::avx512}) {
+    if (!simd_copy_runs_here(copy)) continue;
+    copies_run++;
+    std::printf("[ report ] the law's %s copy runs here%s\n", names[int(copy)],
+                copy == widest_simd_copy() ? " (the one pair linear/coulomb uses)" : "");
+    for (int trial = 0; trial < 20; trial++) {
+      const int n = 61;
+      ContactBlock rows;
+      random_rows(rows, n, rng);
+      for (int lever : {LEVER_CONTACT, LEVER_RADIUS})
+        for (int update : {0, 1})
+          for (int uniform : {0, 1})
+            for (double mu : {0.4, 0.0}) {
+              SCOPED_TRACE(std::string(names[int(copy)]) + (uniform ? ", uniform" : ", per row") +
+                           ", lever " + std::to_string(lever) + ", update " + std::to_string(update) +
+                           ", mu " + std::to_string(mu));
+              const ContactStep step{lever, update, 1e-3};
+              const ContactCoeffs k = contact_coeffs(1.2e3, 0.8e3, mu);
+              // the law row by row, as this file compiles it (no SIMD copy)
+              ContactBlock scalar = rows, simd = rows;
+              for (int r = 0; r < n; r++)
+                linear_coulomb_row(scalar, r, uniform ? k : ContactCoeffs{rows.kn[r], rows.kt[r], rows.mu[r],
+                                                                    rows.frictional[r]}, step);
+              linear_coulomb_block_law(simd, n, uniform ? &k : nullptr, step, copy);
+              expect_same_rows(scalar, simd, n);
+            }
+    }
+  }
+  EXPECT_GE(copies_run, 1);
 }

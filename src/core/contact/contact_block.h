@@ -37,10 +37,44 @@ struct ContactBlock {
   double overlap[capacity], xisq_before[capacity];
 };
 
+// The law on row r of the block: what every SIMD copy of step 2 runs on each row
+PW_FORCEINLINE void linear_coulomb_row(ContactBlock &b, const int r, const ContactCoeffs &k,
+                                       const ContactStep &step)
+{
+  const ContactPair pair{b.delx[r],
+                         b.dely[r],
+                         b.delz[r],
+                         distance_squared(b.delx[r], b.dely[r], b.delz[r]),
+                         b.radi[r],
+                         b.radj[r],
+                         {b.vr[0][r], b.vr[1][r], b.vr[2][r]},
+                         {b.wi[0][r], b.wi[1][r], b.wi[2][r]},
+                         {b.wj[0][r], b.wj[1][r], b.wj[2][r]}};
+  double xi[3] = {b.xi[0][r], b.xi[1][r], b.xi[2][r]};
+  const ContactForce c = linear_coulomb_contact(pair, k, step, xi);
+  for (int d = 0; d < 3; d++) {
+    b.xi[d][r] = xi[d];
+    b.f[d][r] = c.f[d];
+    b.tor_i[d][r] = c.tor_i[d];
+    b.tor_j[d][r] = c.tor_j[d];
+  }
+  b.overlap[r] = c.overlap;
+  b.xisq_before[r] = c.xisq_before;
+}
+
 // Step 2: the law on rows [0, n) of the block; k is the coefficients of every pair, or null
-// where they differ (then each row's own, scalar).
+// where they differ (then each row's own, scalar). Run by the widest SIMD copy of the law
+// this CPU has; every copy gives the scalar law's values to the bit.
 void linear_coulomb_block_law(ContactBlock &b, int n, const ContactCoeffs *k,
                               const ContactStep &step);
+
+// The law's copies for instruction sets (x86-64: AVX2, AVX-512; elsewhere the baseline only),
+// named so that tests and benchmarks can run each one this CPU has.
+enum class SimdCopy { baseline, avx2, avx512 };
+bool simd_copy_runs_here(SimdCopy copy);
+SimdCopy widest_simd_copy();
+void linear_coulomb_block_law(ContactBlock &b, int n, const ContactCoeffs *k,
+                              const ContactStep &step, SimdCopy copy);
 
 namespace detail {
 
