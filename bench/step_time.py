@@ -71,9 +71,11 @@ def timer_breakdown(log):
     text = open(log).read()
     loops = re.findall(r"Loop time of ([0-9.eE+]+) on \d+ procs for (\d+) steps", text)
     sections = {}
+    # LAMMPS prints only the mean of "Other" (its min and max columns blank): taken for all three
     for name, lo, avg, hi in re.findall(
-            r"^(%s)\s*\|\s*([0-9.eE+-]+)\s*\|\s*([0-9.eE+-]+)\s*\|\s*([0-9.eE+-]+)\s*\|" %
+            r"^(%s)\s*\|\s*([0-9.eE+-]*)\s*\|\s*([0-9.eE+-]+)\s*\|\s*([0-9.eE+-]*)\s*\|" %
             "|".join(SECTIONS), text, re.M):
+        lo, hi = lo or avg, hi or avg
         old = sections.get(name, (0.0, 0.0, 0.0))
         sections[name] = tuple(a + float(b) for a, b in zip(old, (lo, avg, hi)))
     grid = re.search(r"(\d+ by \d+ by \d+) MPI processor grid", text)

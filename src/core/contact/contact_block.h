@@ -69,7 +69,8 @@ void linear_coulomb_block_law(ContactBlock &b, int n, const ContactCoeffs *k,
                               const ContactStep &step);
 
 // The law's copies for instruction sets (x86-64: AVX2, AVX-512; elsewhere the baseline only),
-// named so that tests and benchmarks can run each one this CPU has.
+// named so that tests and benchmarks can run each one this CPU has (simd_copy_runs_here:
+// another one would stop the program on an illegal instruction).
 enum class SimdCopy { baseline, avx2, avx512 };
 bool simd_copy_runs_here(SimdCopy copy);
 SimdCopy widest_simd_copy();
