@@ -249,9 +249,12 @@ def main():
             results[label].append(timed_scene(args.scene, plugin, commit, grid, args.steps,
                                               args.ranks, settings, args.bed and os.path.abspath(args.bed)))
             print("%s run %d: %.1f s" % (label, k + 1, results[label][-1][1]), flush=True)
-    lines = ["LAMMPS' timer of bench/step_cost.py's scene `%s` (%s)%s, "
+    own = "; ".join("%s: %s" % (b[0], " ".join("-var %s %s" % kv for kv in b[4].items()))
+                    for b in builds if b[4])
+    lines = ["LAMMPS' timer of bench/step_cost.py's scene `%s` (%s)%s%s, "
              "%d steps on %d ranks, builds run in turn, %d times each." % (
                  args.scene, " ".join("-var %s %s" % kv for kv in SCENES[args.scene][1].items()),
+                 " with each configuration's own settings over those (%s)" % own if own else "",
                  " on the bed %s" % os.path.basename(args.bed) if args.bed else "",
                  args.steps, args.ranks, args.repeat), ""] + table(results, args.steps)
     print("\n".join(lines))

@@ -5,6 +5,10 @@
 // scalar law rounds them; tests/unit/test_contact_block.cpp runs every copy).
 #include "contact/contact_block.h"
 
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__CUDACC__)
+#define PW_X86_COPIES 1    // the AVX2 and AVX-512 copies, chosen with __builtin_cpu_supports
+#endif
+
 namespace porewater {
 
 namespace {
@@ -53,8 +57,7 @@ void law_baseline(ContactBlock &b, const int n, const ContactCoeffs *k, const Co
   block_law(b, n, k, step);
 }
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__CUDACC__)
-#define PW_X86_COPIES 1
+#ifdef PW_X86_COPIES
 __attribute__((target("avx2"))) void law_avx2(ContactBlock &b, const int n,
                                               const ContactCoeffs *k, const ContactStep &step)
 {
