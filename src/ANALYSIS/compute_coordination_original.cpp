@@ -71,7 +71,7 @@ void ComputeCoordinationOriginal::compute_peratom()
     memory->create(contacts, nmax, "coordination/original:contacts");
     vector_atom = contacts;
   }
-  neighbor->build_one(list);
+  porewater::build_occasional_list(neighbor, list);
   porewater::PeriodicBox box;
   const int periodic[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
   for (int d = 0; d < 3; ++d) {

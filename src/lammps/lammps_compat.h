@@ -56,6 +56,27 @@ inline void request_occasional_full_list(LAMMPS_NS::Neighbor *neighbor,
 #endif
 }
 
+// Builds a compute's occasional list unless it is current. Neighbor::build_one skips a list
+// built at or after the last re-neighboring's step; LAMMPS since 2022 forgets that build at
+// each re-neighboring, 29Sep2021 does not, so a list built at the step where one run ended
+// was kept after the next run's setup had re-sorted and re-listed the atoms at that step:
+// stale indices. There build_one's preflag 1 rebuilds it unless built strictly after.
+template <class NeighborT>
+inline auto build_occasional_list(NeighborT *neighbor, LAMMPS_NS::NeighList *list, int)
+    -> decltype(neighbor->build_one(list, 1), void())
+{
+  neighbor->build_one(list, 1);
+}
+template <class NeighborT>
+inline void build_occasional_list(NeighborT *neighbor, LAMMPS_NS::NeighList *list, long)
+{
+  neighbor->build_one(list);
+}
+inline void build_occasional_list(LAMMPS_NS::Neighbor *neighbor, LAMMPS_NS::NeighList *list)
+{
+  build_occasional_list(neighbor, list, 0);
+}
+
 }    // namespace porewater
 
 #endif

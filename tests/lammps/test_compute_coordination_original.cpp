@@ -45,10 +45,27 @@ void counts_as_the_original(pwtest::Accel accel)
   EXPECT_EQ(l.equal("c_native"), 8.0);
 }
 
+// A run ends where the compute was last evaluated and the next one's setup re-lists the
+// atoms at that same step: the count must follow them. Grain 11 is moved between the runs
+// from the floor to touch grain 9 (no other pair changes); a list kept from the first run
+// (LAMMPS 29Sep2021's build_one, lammps_compat.h) never had that pair and counts 2/11 again.
+void counts_after_a_new_run_at_the_same_step(pwtest::Accel accel)
+{
+  Lammps l(accel);
+  l.commands(grains);
+  l.command("run 0");
+  EXPECT_NEAR(l.equal("c_original"), 2.0 / 11.0, 1e-14);
+  l.command("set atom 11 x 0.117 y 0.15 z 0.1");
+  l.command("run 0");
+  EXPECT_NEAR(l.equal("c_original"), 4.0 / 11.0, 1e-14);
+}
+
 }    // namespace
 
 PW_TEST_CPU_AND_KOKKOS(ComputeCoordinationOriginal, CountsAsTheOriginalProgram,
                        counts_as_the_original)
+PW_TEST_CPU_AND_KOKKOS(ComputeCoordinationOriginal, CountsTheGrainsOfANewRunAtTheSameStep,
+                       counts_after_a_new_run_at_the_same_step)
 
 // a bad keyword and an unknown group are named (one LAMMPS instance at a time)
 TEST(ComputeCoordinationOriginal, NamesWhatItExpects)
