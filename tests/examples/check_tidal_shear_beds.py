@@ -7,6 +7,9 @@ Short runs (2 time-series rows, 2,340 steps) of:
 - `-var original 1`: the same bed with the original's integrator (nve/sphere/ty3) and
   pressure iteration (relaxed; it ran: sweeps > 0);
 - `-var bed frictionless`: the former default, consolidated_frictionless_0.data;
+- `-var bed stiff`: the default's bed consolidated again at Table S1's grain stiffness
+  (consolidated_stiff_0.data), run there (k_n 1.16e9, gamma_w x10) at eps 0.14: Delta t 0.2 of
+  the default's (2 rows: 11,680 steps);
 - `-var fast 1`: the default's bed and numerics at twice its time step (eps 0.14), the fluid
   every 25 steps (the default's fluid interval in seconds at every 50) and a skin of 0.2 r
   (2 rows: 1,150 steps, as a row is every 25 round(2.5 s / (1000 dt 25)) = 575 steps).
@@ -45,6 +48,8 @@ CASES = {
                  {"dt": 1.0}),
     "frictionless": (["bed", "frictionless"], "consolidated_frictionless_0.data", "nve/sphere",
                      "converged", None, 2340, {}),
+    "stiff": (["bed", "stiff"], "consolidated_stiff_0.data", "nve/sphere", "converged", None, 11680,
+              {"dt": 0.2, "kn": 1.16e9, "gamma_w": 1000.0, "fluid_every": 10, "skin": 0.4}),
     "fast": (["fast", "1"], "consolidated_0.data", "nve/sphere", "converged", 4.58, 1150,
              {"dt": 2.0, "fluid_every": 25, "skin": 0.2}),
 }
@@ -150,7 +155,7 @@ def main():
         out = run(args.lmp, work, env, ["bed", "packed"], "log.bad")
         said = out.stdout + open(os.path.join(work, "log.bad")).read()
         check(out.returncode != 0, "-var bed packed stops (exit %d)" % out.returncode)
-        check("ERROR: bed is packed: original (the default) or frictionless" in said,
+        check("ERROR: bed is packed: original (the default), stiff or frictionless" in said,
               "and says which values are allowed")
         return 0 if ok else 1
     finally:
