@@ -30,10 +30,13 @@ import time
 
 EXAMPLE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples",
                        "tidal_shear")
-# 12,000 steps in chunks of 960 (8 rows of 120 steps, 10,000 rows per cycle): 12 checkpoints,
-# two profile blocks (every 6,000 steps)
-ROW_STEPS, CHUNK_STEPS = 120, 960
-RUN = ["-var", "run_steps", "12000", "-var", "samples", "10000", "-var", "checkpoint", "0.00206",
+# 12,000 steps in chunks of one row (120 steps, 10,000 rows per cycle): 100 checkpoints, two
+# profile blocks (every 6,000 steps). Every row right after a run's setup: a count that missed
+# the setup's new atom order (compute coordination/original on LAMMPS 29Sep2021 before it
+# rebuilt its list) differs in the continued run on every other row from the kill on, and
+# failed 2 of 3 seeds here
+ROW_STEPS, CHUNK_STEPS = 120, 120
+RUN = ["-var", "run_steps", "12000", "-var", "samples", "10000", "-var", "checkpoint", "0.000257",
        "-var", "write_state", "final"]
 
 
@@ -195,7 +198,7 @@ def main():
             if rng is None:
                 # the write in progress is the checkpoint at the last row's step (a chunk's rows
                 # are printed before its checkpoint): the one before it is used. Usually the
-                # second write (step 960 used); on a loaded machine the wait for the temporary
+                # second write (step 120 used); on a loaded machine the wait for the temporary
                 # file can miss a write and catch a later one
                 expected = ROW_STEPS * rows_at_kill - CHUNK_STEPS
                 good = step == expected and expected >= CHUNK_STEPS
