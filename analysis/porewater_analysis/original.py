@@ -10,6 +10,7 @@ cycles.original_data_file_metrics.
 """
 import numpy as np
 import scipy.optimize
+import scipy.stats
 
 from .timeseries import whole_cycles
 
@@ -104,6 +105,73 @@ def creep_fit(series, period, tau, rate_scale=1.0, first_cycle=2, last_cycle=Non
     sigma = np.sqrt(np.diag(pcov))
     out.update(n=popt[0], A=popt[1], n_sigma=sigma[0], A_sigma=sigma[1])
     return out
+
+
+def least_squares_profile(friction, rate, exponents):
+    """the sum of squared residuals of creep_rheology2 that curve_fit minimises, at each n of
+    `exponents` minimised over A: A enters linearly, A(n) = sum(r f^n) / sum(f^2n); returns
+    (A(n), SSR(n)) as arrays over `exponents`"""
+    fn = friction[None, :] ** np.asarray(exponents, dtype=float)[:, None]
+    a = (fn * rate[None, :]).sum(axis=1) / (fn * fn).sum(axis=1)
+    return a, ((rate[None, :] - a[:, None] * fn) ** 2).sum(axis=1)
+
+
+PROFILE_EXPONENTS = np.linspace(0.0, 40.0, 4001)   # n of the profile: the paper's 6-11 well inside
+
+
+def creep_fit_minimum(friction, rate, exponents=PROFILE_EXPONENTS, level=0.95):
+    """the least-squares minimum that the original's curve_fit seeks (same model, same samples,
+    same linear-space residuals), found on the profile of SSR over n (least_squares_profile)
+    and refined between its neighbouring grid points; with the profile interval: the n whose
+    SSR exceeds the minimum by less than F(level; 1, m - 2) SSR_min / (m - 2) (m samples,
+    residuals taken as independent). Returns {n, A, ssr, interval (lo, hi; None at the
+    grid's end), exponents, profile (SSR over exponents)}"""
+    m = len(rate)
+    a, ssr = least_squares_profile(friction, rate, exponents)
+    i = int(np.argmin(ssr))
+    lo, hi = exponents[max(i - 1, 0)], exponents[min(i + 1, len(exponents) - 1)]
+    best = scipy.optimize.minimize_scalar(
+        lambda n: least_squares_profile(friction, rate, [n])[1][0], bounds=(lo, hi),
+        method="bounded", options={"xatol": 1e-8})
+    n = float(best.x) if best.fun <= ssr[i] else float(exponents[i])
+    a_n, ssr_n = (v[0] for v in least_squares_profile(friction, rate, [n]))
+    inside = ssr <= ssr_n * (1 + scipy.stats.f.ppf(level, 1, m - 2) / (m - 2))
+    first, last = np.nonzero(inside)[0][[0, -1]]
+    interval = (None if first == 0 else float(exponents[first]),
+                None if last == len(exponents) - 1 else float(exponents[last]))
+    return {"n": n, "A": float(a_n), "ssr": float(ssr_n), "interval": interval,
+            "exponents": exponents, "profile": ssr}
+
+
+def creep_rheology1(friction, n):
+    """python/halfshear-darcy-rate-dependence.py lines 43-45: the strain rate of tau/N, A = 1"""
+    return friction ** n
+
+
+def curve_fit_as_called(model, friction, rate):
+    """scipy.optimize.curve_fit(model, tau/N, rate) with its defaults (p0 all ones, maxfev
+    200 (k + 1)), as the original's script calls it: {params (nan where it raised), status
+    ('converged: ...' or the RuntimeError's message), nfev}"""
+    k = model.__code__.co_argcount - 1
+    try:
+        popt, _, info, mesg, _ = scipy.optimize.curve_fit(model, friction, rate, full_output=True)
+    except RuntimeError as error:
+        return {"params": np.full(k, np.nan), "status": str(error), "nfev": 200 * (k + 1)}
+    return {"params": popt, "status": "converged: " + mesg, "nfev": int(info["nfev"])}
+
+
+def creep_fit_as_run(friction, rate):
+    """the two fits of python/halfshear-darcy-rate-dependence.py lines 114-120 in its order:
+    creep_rheology1 (A = 1; its n printed, not used) then creep_rheology2, whose n is the
+    paper's. A RuntimeError in the first stops the script before the second. Returns {n, A
+    (nan where no value: raised, or never reached), stopped (the script stopped there),
+    first, second (curve_fit_as_called of each)}"""
+    first = curve_fit_as_called(creep_rheology1, friction, rate)
+    if np.isnan(first["params"][0]):
+        return {"n": np.nan, "A": np.nan, "stopped": True, "first": first, "second": None}
+    second = curve_fit_as_called(creep_rheology2, friction, rate)
+    return {"n": float(second["params"][0]), "A": float(second["params"][1]),
+            "stopped": np.isnan(second["params"][0]), "first": first, "second": second}
 
 
 def creep_fit_per_cycle(series, period, tau, rate_scale=1.0):

@@ -103,6 +103,32 @@ class Original(unittest.TestCase):
         for f in per_cycle:
             self.assertAlmostEqual(f["n"], N_EXP, delta=1e-6)
 
+    def test_least_squares_minimum_recovers_n_in_any_units(self):
+        """the minimum the original's fit seeks: n of the noise-free law, whether the rates are
+        of order 1 or 1e-9 (the reduced case's scaled rates), A scaled with them"""
+        fit = original.creep_fit(self.series, PERIOD, TAU, RATE_SCALE)
+        for units in (1.0, 1e-9):
+            best = original.creep_fit_minimum(fit["friction"], fit["rate"] * units)
+            self.assertAlmostEqual(best["n"], N_EXP, delta=1e-6)
+            self.assertAlmostEqual(best["A"] / (A_RATE * RATE_SCALE * units), 1.0, delta=1e-5)
+            self.assertLess(best["interval"][1] - best["interval"][0], 0.02)
+
+    def test_least_squares_profile_is_the_sum_of_squares_at_the_best_a(self):
+        """at each n: the A of a one-column linear least-squares fit and its residual sum"""
+        rng = np.random.default_rng(3)
+        f = rng.uniform(0.1, 0.38, 200)
+        r = 1e-9 * f ** 6 * rng.lognormal(0.0, 0.5, 200)
+        a, ssr = original.least_squares_profile(f, r, [2.0, 6.5, 11.0])
+        for k, n in enumerate([2.0, 6.5, 11.0]):
+            (a_ls,), (ssr_ls,), _, _ = np.linalg.lstsq((f ** n)[:, None], r, rcond=None)
+            self.assertAlmostEqual(a[k] / a_ls, 1.0, delta=1e-12)
+            self.assertAlmostEqual(ssr[k] / ssr_ls, 1.0, delta=1e-9)
+        best = original.creep_fit_minimum(f, r)
+        self.assertLess(best["interval"][0], best["n"])
+        self.assertGreater(best["interval"][1], best["n"])
+        self.assertLessEqual(best["ssr"], original.least_squares_profile(f, r, [best["n"] + 0.01])[1][0])
+        self.assertLessEqual(best["ssr"], original.least_squares_profile(f, r, [best["n"] - 0.01])[1][0])
+
     def test_stick_fraction_intervals_and_band_exit(self):
         v = np.maximum(self.series["vx_top"], 0.0)
         rows = original.stick(self.series, PERIOD, TAU)
