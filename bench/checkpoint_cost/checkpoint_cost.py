@@ -7,7 +7,7 @@ less the loop times of its runs is what the run spends outside its time steps (s
 each chunk: neighbour lists, the fixes' setup; the checkpoint writes; reading the input):
 the process's wall time (polled every 20 ms) less the loop times in its log.
 
-    bench/checkpoint_cost.py [--cycles 0.25] [--work DIR]   -> bench/checkpoint_cost_results.md
+    bench/checkpoint_cost/checkpoint_cost.py [--cycles 0.25] [--work DIR]   -> checkpoint_cost_results.md
 """
 import argparse
 import os
@@ -17,8 +17,10 @@ import sys
 import tempfile
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from example_runs import HERE, loop_time, prepare  # noqa: E402
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from common import out_dir  # noqa: E402
+from common.runs import loop_time, prepare  # noqa: E402
 
 ENV = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false")
 
@@ -60,7 +62,7 @@ def main():
     commit = subprocess.run(["git", "describe", "--always", "--dirty=+uncommitted changes"],
                             cwd=HERE, capture_output=True, text=True).stdout.strip()
     lines = [f"# Cost of checkpointing examples/tidal_shear\n",
-             f"Measured by `bench/checkpoint_cost.py --cycles {args.cycles}` on commit {commit}, "
+             f"Measured by `bench/checkpoint_cost/checkpoint_cost.py --cycles {args.cycles}` on commit {commit}, "
              f"the 2-core development machine, the two runs side by side, twice, started in "
              f"either order (load average {load} at the start).\n",
              "| round | started first | run | runs (chunks) | steps | loop time (s) | process wall (s) | outside the steps (s) |",
@@ -84,7 +86,7 @@ def main():
                  "checkpoint lie outside its loop and the steps do the same work, so this is the "
                  "noise of two runs on shared cores (it takes either sign over repeated runs of "
                  "this script); what chunking costs is the column outside the steps.")
-    out = os.path.join(HERE, "checkpoint_cost_results.md")
+    out = os.path.join(out_dir(HERE), "checkpoint_cost_results.md")
     open(out, "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
 

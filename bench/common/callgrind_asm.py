@@ -8,7 +8,7 @@ executed equally often: a loop body is one run, its count is the trip count.
 
 Usage:
     valgrind --tool=callgrind --dump-instr=yes --callgrind-out-file=OUT lmp -in ...
-    bench/callgrind_asm.py OUT path/to/porewater_styles.so SYMBOL_SUBSTRING [--min COUNT]
+    bench/common/callgrind_asm.py OUT path/to/porewater_styles.so SYMBOL_SUBSTRING [--min COUNT]
 (the styles' object: plugin/porewater_styles.so since the plugin has a loader, porewater.so;
 plugin/porewater.so itself in builds before that)
 SYMBOL_SUBSTRING picks, of the symbols (demangled) containing it, the one whose instructions

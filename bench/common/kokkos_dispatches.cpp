@@ -1,8 +1,9 @@
 // A Kokkos profiling hook (KOKKOS_PROFILE_LIBRARY=this.so): counts the parallel dispatches
-// and deep copies of a run, per kernel name, into $KCOUNT_OUT (bench/fidelity_full.py); with
-// $KTIMES_OUT set it also times each kernel and deep copy (bench/gpu_check.py). To time a
-// kernel alone it waits for the device before and after it (cuCtxSynchronize from the
-// driver already loaded, when there is one): the run is slower, its shares are the kernels'.
+// and deep copies of a run, per kernel name, into $KCOUNT_OUT (bench/common/runs.py:
+// dispatches_per_step); with $KTIMES_OUT set it also times each kernel and deep copy
+// (bench/gpu/gpu_check.py). To time a kernel alone it waits for the device before and after
+// it (cuCtxSynchronize from the driver already loaded, when there is one): the run is
+// slower, its shares are the kernels'.
 //   g++ -O2 -shared -fPIC -o kokkos_dispatches.so kokkos_dispatches.cpp -ldl
 #include <dlfcn.h>
 #include <chrono>

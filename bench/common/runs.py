@@ -1,6 +1,7 @@
-"""Runs of examples/tidal_shear for the benchmarks (bench/wall_damping.py, bench/fidelity.py):
-a work folder with the example's inputs, lmp with -var overrides; the time series through
-analysis/porewater_analysis, which importing this module puts on the path."""
+"""Runs of lmp for the studies: examples/tidal_shear's inputs copied into a work folder, lmp
+with -var overrides (niced, each run free to use any core), its CPU and wall seconds and the
+load around it, LAMMPS' loop times, the commit the runs come from, a copy of the plugin that a
+rebuild does not touch, and the Kokkos dispatches a step makes."""
 import os
 import re
 import shutil
@@ -10,15 +11,17 @@ import time
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-EXAMPLE = os.path.join(HERE, "..", "examples", "tidal_shear")
-sys.path.insert(0, os.path.join(HERE, "..", "analysis"))
-from porewater_analysis.timeseries import complete, load  # noqa: E402,F401  (the benchmarks' import)
+from . import COMMON, EXAMPLE
+from porewater_analysis.timeseries import complete, load    # noqa: F401  (the studies' import)
 
+# the inputs that more than one study runs
+REPLICATE_BED = os.path.join(COMMON, "in.replicate_bed")        # a bed tiled nx x ny x nz
+TIDAL_SHEAR_TIMED = os.path.join(COMMON, "in.tidal_shear_timed")  # the example under a timeout
+KOKKOS_DISPATCHES = os.path.join(COMMON, "kokkos_dispatches.cpp")  # Kokkos profiling hook
 
 # the example's bed before the original's preparation became the default (in.params `bed`):
-# fidelity.py's cycle, permeability, creep and full parts and the factors' "former default"
-# were measured on it, and name it to run as they did
+# the paper_figures study's cycle, permeability, creep and full parts and the factors' "former
+# default" were measured on it, and name it to run as they did
 FRICTIONLESS = {"bed": "frictionless"}
 
 
@@ -83,14 +86,71 @@ def loop_time(log, last=True):
 
 def head_commit():
     """the short hash of the commit the benchmarks run from (their results pages name it)"""
-    return subprocess.run(["git", "-C", HERE, "rev-parse", "--short", "HEAD"],
+    return subprocess.run(["git", "-C", COMMON, "rev-parse", "--short", "HEAD"],
                           capture_output=True, text=True).stdout.strip()
 
 
 def prepare(workdir, extra=()):
+    """workdir with the example's inputs and shipped beds, and the files `extra` (paths)"""
     os.makedirs(workdir, exist_ok=True)
     for name in os.listdir(EXAMPLE):
         if name.startswith("in.") or name.startswith("consolidated_"):
             shutil.copy(os.path.join(EXAMPLE, name), workdir)
-    for name in extra:
-        shutil.copy(os.path.join(HERE, name), workdir)
+    for path in extra:
+        shutil.copy(path, workdir)
+
+
+def freeze_plugin(work, part):
+    """the runs of this process load a copy of the plugin taken now (work/plugin_PART): a
+    rebuild meanwhile does not touch them"""
+    frozen = os.path.join(work, "plugin_" + part)
+    os.makedirs(frozen, exist_ok=True)
+    for path in os.environ.get("LD_LIBRARY_PATH", "").split(":"):
+        if os.path.exists(os.path.join(path, "porewater.so")):
+            for so in ("porewater.so", "porewater_styles.so"):    # a new file: runs of an
+                shutil.copy(os.path.join(path, so), os.path.join(frozen, so + ".new"))  # earlier
+                os.replace(os.path.join(frozen, so + ".new"), os.path.join(frozen, so))  # call keep theirs
+            break
+    else:
+        sys.exit("no porewater.so on LD_LIBRARY_PATH: source scripts/env.sh first")
+    os.environ["LD_LIBRARY_PATH"] = frozen + ":" + os.environ["LD_LIBRARY_PATH"]
+
+
+# GPU latency assumed per dispatch (with its fence) and per copy, and the arrays LAMMPS' fix
+# wall/gran (no /kk in 29Sep2021) moved between host and device each step (x v f omega torque
+# up, f torque down): the projection made before any GPU was lent
+LAUNCH_US, COPY_US = 5.0, 15.0
+HOST_FIX_COPIES = 7
+
+
+def read_count(path):
+    words = open(path).readline().split()
+    return {words[i]: int(words[i + 1]) for i in range(0, len(words), 2)}
+
+
+def dispatches_per_step(work, variables=None, folder="dispatches", steps=(1000, 2000)):
+    """Kokkos dispatches and deep copies per step of the reduced example with -sf kk (the
+    same per step at any size) and -var `variables`: the difference of two runs of `steps`
+    (1,000 and 2,000: whole fluid intervals for every N up to 200 that divides 1,000)"""
+    d = os.path.join(work, folder)
+    hook = os.path.join(d, "kokkos_dispatches.so")
+    if not os.path.exists(hook):
+        prepare(d)
+        subprocess.run(["g++", "-O2", "-shared", "-fPIC", "-o", hook, KOKKOS_DISPATCHES],
+                       check=True)
+    totals = []
+    for n in steps:
+        out = os.path.join(d, "count_%d.txt" % n)
+        if os.path.exists(out):
+            totals.append(read_count(out))
+            continue
+        env = dict(os.environ, KOKKOS_PROFILE_LIBRARY=hook, KCOUNT_OUT=out, OMP_NUM_THREADS="1",
+                   OMP_PROC_BIND="false")
+        extra = [a for kv in (variables or {}).items() for a in ("-var", kv[0], str(kv[1]))]
+        subprocess.run(["lmp", "-k", "on", "t", "1", "-sf", "kk", "-in", "in.tidal_shear",
+                        "-var", "run_steps", str(n), "-screen", "none", "-log", "none"] + extra,
+                       cwd=d, env=env, check=True)
+        totals.append(read_count(out))
+    span = float(steps[1] - steps[0])
+    per = {k: (totals[1][k] - totals[0][k]) / span for k in totals[0]}
+    return per["for"] + per["reduce"] + per["scan"], per["deep_copy"]

@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """What moves the creep exponent and the suction under the plate: cases that each change one
-thing of the default example, as ensembles read by both estimators (bench/RESULTS_fidelity.md,
-"What moves the creep exponent").
+thing of the default example, as ensembles read by both estimators (RESULTS.md beside this
+script).
 
-Every case runs as the default's ensemble does (bench/ensemble.py): CASE_MEMBERS members,
+Every case runs as the default's ensemble does (bench/fidelity/ensemble.py): CASE_MEMBERS members,
 member 0 unperturbed, member K with its sheared bed moved by up to 1e-12 m (seed K), 4 cycles
 on 1 rank, two side by side; metrics over cycles 2-4 by our estimators and the original's
 (porewater_analysis). The cases, their parameters fixed before any of their runs:
@@ -22,7 +22,7 @@ on 1 rank, two side by side; metrics over cycles 2-4 by our estimators and the o
             the cells: kept.
   kn10      k_n x10 with the wall dashpot's damping ratio kept (gamma_w x sqrt 10), ε 0.07
             (Δt ÷ 3.2), on the shipped bed consolidated again for 0.05 s at that stiffness
-            (bench/fidelity_factors.py's STIFF and RESETTLE), its groups kept for its H, phi.
+            (bench/common/beds.py: STIFF and RESETTLE), its groups kept for its H, phi.
   kn10_eps0.14  the same at ε 0.14: whether the stiff cases may run at the preset's step
             (its members against kn10's band) before k_n x100 is run.
   kn100_eps0.14  k_n x100 (Table S1's), γ_w x10, ε 0.14 (kn10_eps0.14 stayed inside the
@@ -34,11 +34,12 @@ on 1 rank, two side by side; metrics over cycles 2-4 by our estimators and the o
             bed changes is its height or its preparation.
 
 Usage (source scripts/env.sh first for --run):
-    /usr/bin/python3 bench/creep_factors.py [--work DIR] [--run CASE[,CASE] [--members K]]
-writes bench/creep_factors_results.md and bench/creep_factors.png, every complete run's
-metrics kept in bench/creep_factors_runs.json (the table is rebuilt from it when the runs'
-folders are gone); --count: bench/creep_factors_count.md; --bisect-tall:
-bench/creep_factors_bisect.md.
+    /usr/bin/python3 bench/creep_factors/creep_factors.py [--work DIR] [--run CASE[,CASE] [--members K]]
+writes creep_factors_results.md and creep_factors.png beside this script, every complete run's
+metrics kept in creep_factors_runs.json (the table is rebuilt from it when the runs' folders
+are gone); --count: creep_factors_count.md; --bisect-tall: creep_factors_bisect.md. The
+short setting (bench/smoke.py): every run a few thousand steps (none complete), the bisection
+one round.
 """
 import argparse
 import glob
@@ -49,16 +50,21 @@ import shutil
 import textwrap
 from concurrent.futures import ThreadPoolExecutor
 
+import sys
+
 import numpy as np
 from scipy import stats
 
-from ensemble import AGAINST_PAPER, METRICS, mean_band, run_metrics, summary
-from example_runs import EXAMPLE, head_commit, load, prepare, read_cost, run_lmp
-from fidelity_factors import (MU_PREP_ORIGINAL, RESETTLE, SHIPPED_FRICTIONLESS, SPREAD, STIFF,
-                              bed_geometry, bed_groups, bisect_mu_prep, prepare_bed)
-from time_to_solution import CYCLES, KEEP, PERIOD, band, freeze_plugin, members, run_one
-
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from common import BENCH, EXAMPLE, SMOKE, out_dir, short    # noqa: E402
+from common.beds import (MU_PREP_ORIGINAL, RESETTLE, SHIPPED_FRICTIONLESS, SPREAD, STIFF,    # noqa: E402
+                         bed_geometry, bed_groups, bisect_mu_prep, prepare_bed)
+from common.ensembles import (AGAINST_PAPER, CYCLES, KEEP, METRICS, PERIOD, band, mean_band,    # noqa: E402
+                              members, run_metrics, run_one, summary)
+from common.runs import REPLICATE_BED, freeze_plugin, head_commit, load, prepare, read_cost, run_lmp    # noqa: E402
+
+OUT = out_dir(HERE)
 
 PLATE_MEAN, PLATE_TOP = 0.2566, 0.2624   # m: the plate in cycles 2-4, default ensemble (8 runs)
 CELL_Z = 0.08176                         # the default bed's fluid cells (in.bed_original)
@@ -86,7 +92,7 @@ CASES = {
                     {}, "packed"),
 }
 CASE_MEMBERS = 4
-# the table's columns: metric keys of bench/ensemble.py (ours, then the original's)
+# the table's columns: metric keys of bench/common/ensembles.py (ours, then the original's)
 COLUMNS = ["n", "n_original", "z_creep", "z_creep_original", "z_min", "z_min_original",
            "onset", "exit_onset", "end", "exit_end", "stick_fraction", "slip", "suction",
            "suction_top"]
@@ -165,12 +171,13 @@ def identical_to_default(work, case):
     return lines
 
 
-RUNS = os.path.join(HERE, "creep_factors_runs.json")   # every run's metrics, kept with the page
-DEFAULT_TABLE = os.path.join(HERE, "ensemble_results.md")   # the default ensemble's members
+RUNS = os.path.join(OUT, "creep_factors_runs.json")   # every run's metrics, kept with the page
+# the default ensemble's members, as bench/fidelity/ensemble.py printed them
+DEFAULT_TABLE = os.path.join(BENCH, "fidelity", "ensemble_results.md")
 
 
 def default_members():
-    """{member: metrics} of the default's 1-rank ensemble as bench/ensemble.py printed them
+    """{member: metrics} of the default's 1-rank ensemble as bench/fidelity/ensemble.py printed them
     (its per-member table: the values rounded as shown), the metrics keyed as METRICS"""
     keys = {label: (key, scale) for key, label, scale, _ in METRICS}
     text = open(DEFAULT_TABLE).read().split("### 1 rank")[1].split("###")[0]
@@ -188,7 +195,7 @@ def default_members():
 
 
 def default_cost():
-    """the default ensemble's CPU s per run as bench/ensemble.py printed it"""
+    """the default ensemble's CPU s per run as bench/fidelity/ensemble.py printed it"""
     return re.search(r"1 rank \(two runs side by side\): ([0-9-]+) CPU s", open(DEFAULT_TABLE).read()).group(1)
 
 
@@ -220,7 +227,7 @@ def ensembles(store):
     default_face = ((PLATE_MEAN - LAYERS * CELL_Z) / CELL_Z,
                     float(PLATE_TOP > (LAYERS + 0.5) * CELL_Z))
     default = default_members()
-    out = [("the default ensemble (bench/ensemble_results.md)", default,
+    out = [("the default ensemble (bench/fidelity/ensemble_results.md)", default,
             [default_face] * len(default), [])]
     for case, (label, _, _) in CASES.items():
         runs = {n: r for n, r in sorted(store.items()) if r["case"] == case}
@@ -340,7 +347,7 @@ def plot(store, path):
 
 def report(work):
     store = record_runs(work)
-    lines = ["# What moves the creep exponent: bench/creep_factors.py", "",
+    lines = ["# What moves the creep exponent: bench/creep_factors/creep_factors.py", "",
              "Written at commit %s from the runs kept in `creep_factors_runs.json` (run from the "
              "commit each names; examples/tidal_shear, %d cycles each, 1 rank, two side by side; "
              "metrics over cycles %d-%d, mean ± the 95 %% prediction band of one more run; CPU s "
@@ -354,17 +361,17 @@ def report(work):
     if rerun:
         lines += ["", "The default's members run again (face0.14) against the default "
                   "ensemble's:", ""] + rerun
-    plot(store, os.path.join(HERE, "creep_factors.png"))
+    plot(store, os.path.join(OUT, "creep_factors.png"))
     lines += ["", "![n per case, both estimators](creep_factors.png)"]
-    open(os.path.join(HERE, "creep_factors_results.md"), "w").write("\n".join(lines) + "\n")
+    open(os.path.join(OUT, "creep_factors_results.md"), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
 
 
 def report_counts(work):
-    lines = ["# The original's count on Table S1's geometry: bench/creep_factors.py --count", "",
+    lines = ["# The original's count on Table S1's geometry: bench/creep_factors/creep_factors.py --count", "",
              "Written at commit %s from the runs in `%s`." % (head_commit(), work), ""]
     lines += count_geometry(work)
-    open(os.path.join(HERE, "creep_factors_count.md"), "w").write("\n".join(lines) + "\n")
+    open(os.path.join(OUT, "creep_factors_count.md"), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
 
 
@@ -387,7 +394,7 @@ def first_state(work, name, data, tiles, variables, step=1170):
     d = os.path.join(work, "tiles", "%s_%dx%d" % ((name,) + tiles))
     dump = os.path.join(d, "grains_%d.dump" % step)
     if not os.path.exists(dump):
-        prepare(d, ["in.replicate_bed"])
+        prepare(d, [REPLICATE_BED])
         shutil.copy(data, os.path.join(d, "untiled.data"))
         run_lmp(d, "in.replicate_bed", {"in": "untiled.data", "out": "tiled.data",
                                         "nx": tiles[0], "ny": tiles[1], "nz": 1}, log="log.tile")
@@ -438,9 +445,9 @@ def bisect_tall(work):
     geometry (TARGET_Z), between the frictionless and the default's preparation"""
     pool = ThreadPoolExecutor(2)
     probes = bisect_mu_prep(work, lambda f, xs: list(pool.map(f, xs)), low=0.0,
-                            high=MU_PREP_ORIGINAL, rounds=3, tol=0.05,
+                            high=MU_PREP_ORIGINAL, rounds=short(3, 1), tol=0.05,
                             probe=lambda mu: tall_probe(work, mu))
-    return ["# The tall bed's friction while packing: bench/creep_factors.py --bisect-tall", "",
+    return ["# The tall bed's friction while packing: bench/creep_factors/creep_factors.py --bisect-tall", "",
             "Written at commit %s from the beds in `%s`." % (head_commit(), work), "",
             "| mu_prep | the original's count at 2.5 ms, Table S1's geometry | H (m) | phi |",
             "|---|---|---|---|"] + ["| %.4f | %.3f | %.4f | %.4f |" % p for p in probes]
@@ -460,7 +467,8 @@ def creeping_state(work):
 
 def count_geometry(work):
     """lines: both counts at the start on the reduced bed, on Table S1's footprint (measured)
-    and at Table S1's height (the interior repeated)"""
+    and at Table S1's height (the interior repeated); the short setting: the shipped default
+    bed's two rows only"""
     rows = [("the default bed", "original", (1, 1)),
             ("the default bed on Table S1's footprint (tiled 2 x 2)", "original", (2, 2)),
             ("the frictionless bed", "frictionless", (1, 1)),
@@ -468,19 +476,20 @@ def count_geometry(work):
     lines = ["| bed (at the first sample, 2.5 ms, unless said) | grains | our count | the original's count | "
              "at Table S1's height too (estimate): ours | the original's |", "|---|---|---|---|---|---|"]
     states = [(label, first_state(work, bed, os.path.join(EXAMPLE, BEDS[bed]), tiles,
-                                  {"bed": bed}), False) for label, bed, tiles in rows]
-    creeping = creeping_state(work)
-    states += [(label, first_state(work, "creeping", creeping, tiles, {}, 0), False)
-               for label, tiles in (
-        ("the default bed creeping (member 0 at %.1f cycles, as read)" % CREEP_STATE_CYCLES, (1, 1)),
-        ("the same on Table S1's footprint", (2, 2)))]
-    for case, label in (("packed0.044", "the default's grains packed with friction 0.044"),
-                        ("tall", "the tall bed (2,400 grains, friction 0.044)")):
-        data, variables = case_bed(work, case)
-        variables = {k: v for k, v in variables.items() if k != "data"}
-        states += [(text, first_state(work, CASES[case][2] + "_mu%.4f" % MU_TALL, data, tiles,
-                                      variables), case == "tall") for text, tiles in (
-            (label, (1, 1)), (label + " on Table S1's footprint", (2, 2)))]
+                                  {"bed": bed}), False) for label, bed, tiles in short(rows, rows[:2])]
+    if not SMOKE:
+        creeping = creeping_state(work)
+        states += [(label, first_state(work, "creeping", creeping, tiles, {}, 0), False)
+                   for label, tiles in (
+            ("the default bed creeping (member 0 at %.1f cycles, as read)" % CREEP_STATE_CYCLES, (1, 1)),
+            ("the same on Table S1's footprint", (2, 2)))]
+        for case, label in (("packed0.044", "the default's grains packed with friction 0.044"),
+                            ("tall", "the tall bed (2,400 grains, friction 0.044)")):
+            data, variables = case_bed(work, case)
+            variables = {k: v for k, v in variables.items() if k != "data"}
+            states += [(text, first_state(work, CASES[case][2] + "_mu%.4f" % MU_TALL, data, tiles,
+                                          variables), case == "tall") for text, tiles in (
+                (label, (1, 1)), (label + " on Table S1's footprint", (2, 2)))]
     for label, g, tall in states:                      # tall: already of Table S1's height
         lines.append("| %s | %d | %.2f | %.2f | %s | %s |" % (
             label, len(g["z"]), g["c_contacts"].mean(), g["c_coordination_original"].mean(),
@@ -495,13 +504,13 @@ def main():
     ap.add_argument("--run", help="comma-separated cases to run (then report)")
     ap.add_argument("--members", type=int, default=CASE_MEMBERS)
     ap.add_argument("--count", action="store_true",
-                    help="both counts on Table S1's geometry (bench/creep_factors_count.md)")
+                    help="both counts on Table S1's geometry (creep_factors_count.md)")
     ap.add_argument("--bisect-tall", action="store_true",
-                    help="find the tall bed's mu_prep (bench/creep_factors_bisect.md)")
+                    help="find the tall bed's mu_prep (creep_factors_bisect.md)")
     args = ap.parse_args()
     if args.bisect_tall:
         lines = bisect_tall(args.work)
-        open(os.path.join(HERE, "creep_factors_bisect.md"), "w").write("\n".join(lines) + "\n")
+        open(os.path.join(OUT, "creep_factors_bisect.md"), "w").write("\n".join(lines) + "\n")
         print("\n".join(lines))
         return
     if args.count:

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """fix darcy/pressure: accuracy against run time, and its share of a Table S1 step.
 
-Part 1 (accuracy): grain-free runs of bench/in.darcy_accuracy through lmp + the plugin,
+Part 1 (accuracy): grain-free runs of in.darcy_accuracy through lmp + the plugin,
   against the analytic solutions, sweeping one setting at a time around a base case:
   grid layers nz, time step dt, `every N` (fluid step N*dt at a fixed LAMMPS dt) and the
   relative solver tolerance `tol`.
@@ -15,8 +15,8 @@ Part 1 (accuracy): grain-free runs of bench/in.darcy_accuracy through lmp + the 
   Errors are relative to the pressure scale (1). Time: LAMMPS' loop time (median).
 Part 2 (share): two 9,600-grain scenes, grid 6x3x6, pair linear/coulomb, each run
   without the fix, with `every 1` and with `every 10`, interleaved; share of the fix =
-  (t_fix - t_none) / t_fix. "columns": bench/in.darcy_share (grains stacked in columns,
-  2 contacts a grain: an upper bound of the share); "bed": bench/in.darcy_share_bed (the
+  (t_fix - t_none) / t_fix. "columns": in.darcy_share (grains stacked in columns,
+  2 contacts a grain: an upper bound of the share); "bed": bench/common/in.darcy_share_bed (the
   consolidated packing of examples/tidal_shear replicated 2x2x2 to the Table S1 box).
   Time = loop CPU time (LAMMPS' loop time x its "% CPU use"), less sensitive than wall
   time to other jobs on a shared machine. With --baseline DIR also the plugin in DIR
@@ -25,15 +25,18 @@ Part 2 (share): two 9,600-grain scenes, grid 6x3x6, pair linear/coulomb, each ru
 
 Usage (after building the plugin, e.g. into build-bench/plugin):
     source scripts/env.sh
-    /usr/bin/python3 bench/darcy_bench.py [--plugin build-bench/plugin] [--baseline DIR]
+    /usr/bin/python3 bench/darcy/darcy_bench.py [--plugin build-bench/plugin] [--baseline DIR]
         [--repeat 3] [--part accuracy|share|all]
-Writes bench/darcy_bench_results.md and bench/darcy_bench.png.
+Writes darcy_bench_results.md (--out) and darcy_bench.png beside it. The short setting
+(bench/smoke.py): each sweep's first value.
 """
 import argparse, cmath, math, os, re, statistics, subprocess, sys, tempfile
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from common import COMMON, EXAMPLE, REPO, out_dir, short    # noqa: E402
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMP_NUM_THREADS="1")
 PHI, KC = 0.4, 2.25
@@ -44,7 +47,7 @@ PERIODS = 3
 
 
 def run_lmp(plugin, infile, variables, workdir, wrapper=()):
-    cmd = list(wrapper) + ["lmp", "-in", os.path.join(HERE, infile), "-log", "none", "-echo", "none"]
+    cmd = list(wrapper) + ["lmp", "-in", infile, "-log", "none", "-echo", "none"]
     for k, v in variables.items():
         cmd += ["-var", k, str(v)]
     env = dict(ENV, LD_LIBRARY_PATH=os.path.abspath(plugin) + ":" + ENV.get("LD_LIBRARY_PATH", ""))
@@ -123,7 +126,7 @@ def accuracy(plugin, repeat, workdir):
     configs = []
     for case in (1, 2):
         for name, values in SWEEPS[case]:
-            for v in values:
+            for v in short(values, values[:1]):
                 s = dict(BASE[case])
                 s["n" if name == "dt" else name] = v
                 configs.append((case, name, v, s))
@@ -134,7 +137,7 @@ def accuracy(plugin, repeat, workdir):
             profile = os.path.join(workdir, f"acc_{i}.profile")
             var = case_settings(case, s["nz"], s["n"], s["every"], s["tol"])
             var["profile"] = profile
-            t, out = run_lmp(plugin, "in.darcy_accuracy", var, workdir)
+            t, out = run_lmp(plugin, os.path.join(HERE, "in.darcy_accuracy"), var, workdir)
             times[i].append(t)
             if r == 0:
                 last = [l.split() for l in out.splitlines() if re.match(r"^\s+\d+\s+\S+\s+\S+\s+\S+\s*$", l)]
@@ -188,8 +191,9 @@ def breakdown(out):
     return get("Pair"), get("Modify")
 
 
-SCENES = (("columns", "in.darcy_share"), ("bed", "in.darcy_share_bed"))
-EXAMPLES = os.path.join(HERE, "..", "examples", "tidal_shear")
+SCENES = (("columns", os.path.join(HERE, "in.darcy_share")),
+          ("bed", os.path.join(COMMON, "in.darcy_share_bed")))
+EXAMPLES = EXAMPLE
 CASES = (dict(fluid=0), dict(fluid=1, every=1), dict(fluid=1, every=10))
 
 
@@ -266,19 +270,19 @@ def instructions(plugins, workdir, steps=100, grains=9600):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--plugin", default=os.path.join(HERE, "..", "build-bench", "plugin"))
+    ap.add_argument("--plugin", default=os.path.join(REPO, "build-bench", "plugin"))
     ap.add_argument("--baseline", help="plugin dir of a previous build to compare (share part)")
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--steps", type=int, default=300, help="steps of the share runs")
     ap.add_argument("--part", choices=("accuracy", "share", "all"), default="all")
     ap.add_argument("--instructions", action="store_true", help="share part: callgrind counts too")
-    ap.add_argument("--out", default=os.path.join(HERE, "darcy_bench_results.md"))
+    ap.add_argument("--out", default=os.path.join(out_dir(HERE), "darcy_bench_results.md"))
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as work:
-        text = ["# fix darcy/pressure benchmark (generated by bench/darcy_bench.py)", ""]
+        text = ["# fix darcy/pressure benchmark (generated by bench/darcy/darcy_bench.py)", ""]
         if args.part in ("accuracy", "all"):
             rows = accuracy(args.plugin, args.repeat, work)
-            plot(rows, os.path.join(HERE, "darcy_bench.png"))
+            plot(rows, os.path.join(os.path.dirname(os.path.abspath(args.out)), "darcy_bench.png"))
             text += ["## Error against run time (grain-free, grid 6 x 3 x nz)", "",
                      "Plot: darcy_bench.png", ""] + accuracy_table(rows) + [""]
         if args.part in ("share", "all"):

@@ -1,62 +1,44 @@
 #!/usr/bin/python3
-"""The ensembles of examples/tidal_shear read by both estimators, the package's and the
-original program's (analysis/porewater_analysis), and whether 2 MPI ranks shift them.
+"""The paper's numbers on the ensembles of examples/tidal_shear, read by both estimators, the
+package's and the original program's (analysis/porewater_analysis), and whether 2 MPI ranks
+shift them.
 
-The runs: `time_to_solution.py --part ensemble` (ENSEMBLE members on 1 rank, two side by
-side) and `--part ensemble_np2` (NP2_ENSEMBLE on 2 ranks, one at a time), CYCLES cycles each,
-every member but member0 with its sheared bed moved at random by up to PERTURB (seed K: the
-same start on either layout). Per run: each metric over cycles 2-4 (the mean of the cycles;
-n pooled over their creep samples). Per ensemble: mean, standard deviation, the 95 %
+The runs (bench/common/ensembles.py): `--run default` (ENSEMBLE members on 1 rank, two side by
+side) and `--run np2` (NP2_ENSEMBLE on 2 ranks, one at a time), CYCLES cycles each, every
+member but member0 with its sheared bed moved at random by up to PERTURB (seed K: the same
+start on either layout). bench/time_to_solution makes the same runs (--part ensemble,
+ensemble_np2) in the same folders. Per run: each metric over cycles 2-4 (the mean of the
+cycles; n pooled over their creep samples). Per ensemble: mean, standard deviation, the 95 %
 prediction band of one more run. 2 ranks against 1 rank: the difference of the means, its 95 %
 interval (Welch), and whether it is outside that interval family-wise (Bonferroni over the
 metrics compared).
 
-The other cases of bench/RESULTS_fidelity.md (CASES: the frictionless bed, the original
-preset, the low-permeability twin), CASE_MEMBERS members each on 1 rank, by `--run CASE`, two
-side by side; their table beside the default's in the report.
+The other cases (CASES: the frictionless bed, the original preset, the low-permeability twin),
+CASE_MEMBERS members each on 1 rank, by `--run CASE`, two side by side; their table beside
+the default's in the report.
 
 Usage (source scripts/env.sh first for --run):
-    /usr/bin/python3 bench/ensemble.py [--work DIR] [--run CASE [--members K]]
-writes bench/ensemble_results.md and bench/ensemble.png.
+    /usr/bin/python3 bench/fidelity/ensemble.py [--work DIR] [--run default|np2|CASE [--members K]]
+writes bench/fidelity/ensemble_results.md and ensemble.png.
 """
 import argparse
 import glob
 import os
 import re
+import sys
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 from scipy import stats
 
-from example_runs import complete, head_commit, read_cost
-from porewater_analysis.cycles import after_min_n
-from porewater_analysis.report import analyse_run
-from time_to_solution import (CYCLES, KEEP, PERIOD, band, freeze_plugin, members, np2_members,
-                              run_one)
-from time_to_solution import METRICS as METRICS_OF_KNOBS
-
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from common import out_dir    # noqa: E402
+from common.ensembles import (AGAINST_PAPER, CYCLES, KEEP, METRICS, band, mean_band,    # noqa: E402
+                              members, np2_members, run_metrics, run_one, summary)
+from common.runs import freeze_plugin, head_commit, read_cost    # noqa: E402
 
-# key, label, scale, format: ours (porewater_analysis.cycles) as the knobs are judged by, and
-# the coordination while creeping; the original's (porewater_analysis.original)
-OURS = METRICS_OF_KNOBS + [("z_creep", "Z creeping, our count", 1.0, "%.2f"),
-                          ("z_min_after", "min Z of our count: cycles after the minimum of N",
-                           1.0, "%.3f"),
-                          ("suction_top", "suction in slip under the plate (A; top fluid layer)",
-                           1.0, "%.3f")]
-ORIGINAL = [
-    ("n_original", "n, the original's fit (curve_fit)", 1.0, "%.2f"),
-    ("z_creep_original", "Z creeping, the original's count", 1.0, "%.2f"),
-    ("z_min_original", "min Z, the original's count", 1.0, "%.3f"),
-    ("z_min_after_original", "min Z of the original's count: cycles after the minimum of N",
-     1.0, "%.3f"),
-    ("stick_fraction", "stick fraction (original: v = 0)", 1.0, "%.3f"),
-    ("exit_onset", "velocity leaves the creep band (phase)", 1.0, "%.3f"),
-    ("exit_end", "velocity back in the band (phase)", 1.0, "%.3f"),
-]
-METRICS = OURS + ORIGINAL
-
-# the cases of bench/RESULTS_fidelity.md beside the default: in.tidal_shear -var overrides
+# the cases beside the default: in.tidal_shear -var overrides
 CASES = {
     "frictionless": ("the frictionless bed (the former default)", {"bed": "frictionless"}),
     "original": ("the original preset (-var original 1)", {"original": 1}),
@@ -76,9 +58,13 @@ def case_members(case, count=CASE_MEMBERS):
 
 
 def run_case(work, case, count, jobs=2):
+    """the members of a case, of the default (1 rank) or of the default on 2 ranks (one at a
+    time: both cores)"""
     freeze_plugin(work, case)
-    pool = ThreadPoolExecutor(jobs)
-    for name, cpu in pool.map(lambda nv: run_one(work, *nv), case_members(case, count).items()):
+    ranks = 2 if case == "np2" else 1
+    runs = {"default": members(), "np2": np2_members()}.get(case) or case_members(case, count)
+    pool = ThreadPoolExecutor(1 if ranks > 1 else jobs)
+    for name, cpu in pool.map(lambda nv: run_one(work, *nv, ranks=ranks), runs.items()):
         print("%s: %s" % (name, "done before" if cpu is None else "%.0f s CPU" % cpu), flush=True)
 
 
@@ -106,43 +92,11 @@ def cases_table(work, default):
     return lines
 
 
-def mean_over_kept(rows, key):
-    values = [r[key] for r in rows if r.get(key) is not None]
-    return float(np.mean(values)) if len(values) == len(rows) else None
-
-
-def run_metrics(work, name):
-    """{metric: value over cycles KEEP} of a complete run by both estimators, or None"""
-    d = os.path.join(work, name)
-    if not complete(os.path.join(d, "timeseries.txt"), CYCLES * PERIOD):
-        return None
-    result = analyse_run(d, cycles=CYCLES)
-    kept = [c for c in result["cycles"] if c["cycle"] in KEEP]
-    ours = [dict(c["ours"]) for c in kept]
-    original = [dict(c["original"]) for c in kept]
-    for row in ours + original:    # a collapse in the landing just past the cycle's end
-        row["z_min_after"] = after_min_n(row["z_min_phase"])    # stays next to one before it
-    out = {key: mean_over_kept(ours, key) for key, _, _, _ in OURS if key != "n"}
-    out.update({key: mean_over_kept(original, key.replace("_original", ""))
-                for key, _, _, _ in ORIGINAL if key.endswith("_original") and key != "n_original"})
-    out.update({key: mean_over_kept(original, key) for key in ("stick_fraction", "exit_onset",
-                                                                "exit_end")})
-    pooled = result["pooled"]
-    out["n"] = pooled["ours"]["n"] if pooled["ours"] else None
-    out["n_original"] = None if np.isnan(pooled["original"]["n"]) else pooled["original"]["n"]
-    return {k: v for k, v in out.items() if v is not None}
-
-
 def processor_grid(work, name):
     """LAMMPS' processor grid of a run, as its log says ("1 by 1 by 2")"""
     found = re.search(r"(\d+ by \d+ by \d+) MPI processor grid",
                       open(os.path.join(work, name, "log.lammps")).read())
     return found.group(1) if found else "?"
-
-
-def summary(ens, key):
-    values = np.array([m[key] for m in ens.values() if key in m])
-    return values
 
 
 def ensemble_table(label, ens):
@@ -190,34 +144,6 @@ def layout_comparison(one, two):
     lines += ["", "Metrics compared: %d; family-wise: t(1 - 0.025/%d) (Bonferroni). Shifted "
               "beyond it: %s." % (len(compared), len(compared), ", ".join(shifted) or "none")]
     return lines
-
-
-# the paper's and the original data file's values (bench/RESULTS_fidelity.md says where from),
-# and the metrics of both estimators that compare with each: label, reference, ours, original's
-AGAINST_PAPER = [
-    ("creep exponent n, cycles 2-4 pooled", "6-11 (the paper, by the original's fit)", "n",
-     "n_original"),
-    ("coordination while creeping (phases 0.2-0.6)", "3.49 (3.47-3.51; the original's data file, "
-     "cycles 2-9)", "z_creep", "z_creep_original"),
-    ("minimum coordination of a cycle", "0.044 (0.036-0.052)", "z_min", "z_min_original"),
-    ("its time: cycles after the minimum of N", "0.264 (median)", "z_min_after",
-     "z_min_after_original"),
-    ("slip onset (phase): ours 1 cm/s; the original's velocity leaves its creep band",
-     "~0.61 (its Figure 3)", "onset", "exit_onset"),
-    ("slip end (phase)", "~0.81 (its Figure 3)", "end", "exit_end"),
-    ("stick: share of the cycle with the original's velocity 0", "(shaded, no number)", None,
-     "stick_fraction"),
-]
-
-
-def mean_band(ens, key):
-    """a metric of an ensemble as a cell: mean ± the 95 % prediction band (3 runs or more),
-    the mean of fewer, "none" without any"""
-    scale, f = {k: (scale, f) for k, _, scale, f in METRICS}[key]
-    v = summary(ens, key)
-    if not len(v):
-        return "none"
-    return f % (scale * v.mean()) + (" ± " + f % (scale * band(v)[1]) if len(v) >= 3 else "")
 
 
 def against_paper(one):
@@ -268,7 +194,7 @@ def report(work):
     two = {n: m for n, m in two.items() if m}
     commit = head_commit()
     grids = sorted({processor_grid(work, n) for n in two})
-    lines = ["# The ensembles by both estimators: bench/ensemble.py", "",
+    lines = ["# The ensembles by both estimators: bench/fidelity/ensemble.py", "",
              "Tables written at commit %s from the runs in `%s` (examples/tidal_shear, %d cycles "
              "each; metrics over cycles %d-%d: the mean of the cycles, n pooled over their "
              "samples). Ours: porewater_analysis.cycles; the original's: "
@@ -282,16 +208,18 @@ def report(work):
     lines += ensemble_table("2 ranks: %d members" % len(two), two) + [""]
     lines += ["## 2 ranks against 1 rank", ""] + layout_comparison(one, two)
     lines += ["", "## The cases, by both estimators", ""] + cases_table(work, one)
-    plot(one, two, os.path.join(HERE, "ensemble.png"))
+    out = out_dir(HERE)
+    plot(one, two, os.path.join(out, "ensemble.png"))
     lines += ["", "![each member by layout; squares: mean and sd](ensemble.png)"]
-    open(os.path.join(HERE, "ensemble_results.md"), "w").write("\n".join(lines) + "\n")
+    open(os.path.join(out, "ensemble_results.md"), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--work", default="/tmp/pw_time_to_solution")
-    ap.add_argument("--run", choices=sorted(CASES), help="run a case's members (then report)")
+    ap.add_argument("--run", choices=["default", "np2"] + sorted(CASES),
+                    help="run the default's members (1 rank; np2: 2 ranks) or a case's, then report")
     ap.add_argument("--members", type=int, default=CASE_MEMBERS)
     args = ap.parse_args()
     if args.run:

@@ -16,7 +16,9 @@ In this order (both cores busy throughout), parameters fixed before any of the r
               coordination/original, doc)
 
 Usage (source scripts/env.sh first):
-    /usr/bin/python3 bench/paper_scene.py [--work DIR] [--only stiff,table_s1,...]
+    /usr/bin/python3 bench/fidelity/paper_scene.py [--work DIR] [--only stiff,table_s1,...]
+The short setting (bench/smoke.py): CYCLES and the members shortened; table_s1 needs the
+9,600-grain bed's preparation and is not part of it.
 """
 import argparse
 import os
@@ -28,15 +30,16 @@ from concurrent.futures import ThreadPoolExecutor
 import numpy as np
 from scipy import stats
 
-from ensemble import AGAINST_PAPER, run_metrics, summary
-from example_runs import complete, prepare, run_lmp
-from time_to_solution import PERTURB, freeze_plugin
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from common import short    # noqa: E402
+from common.ensembles import AGAINST_PAPER, PERTURB, run_metrics, summary    # noqa: E402
+from common.runs import complete, freeze_plugin, prepare, run_lmp    # noqa: E402
 
 WORK = "/work/runs/paper_scene"
-CYCLES = 4
-STIFF_MEMBERS, STIFF_EPS_CHECK, DEFAULT_MEMBERS = 6, 2, 8
+CYCLES = short(4, 0.002)
+STIFF_MEMBERS, STIFF_EPS_CHECK, DEFAULT_MEMBERS = short((6, 2, 8), (2, 1, 2))
 TABLE_S1_CYCLES, TABLE_S1_PERIOD = 3, 5.0
-MU_TALL = 0.0444                 # bench/creep_factors_bisect.md: 4.61 by the original's count
+MU_TALL = 0.0444                 # bench/creep_factors/creep_factors_bisect.md: 4.61 by the original's count
 SOFT_KN = 1.16e7                 # the Table S1 bed is packed at the reduced case's k_n
 DUMP_CYCLES = 0.25
 

@@ -14,25 +14,26 @@ Parts (each run in its own folder under the work folder; lmp with and without AC
             one ulp higher, on the CPU with the bed's grains displaced by up to DISPLACEMENT,
             and twice with ACCEL: the time series agree when max |accel - cpu| over it is at
             most 3 x the largest spread of round-off (cpu vs the other two, accel vs accel
-            again; bench/host_compare.py's criterion); the cost per step of each
-  table_s1  the Table S1-sized scene (bench/step_cost.py's table_s1: 9,600 grains, -var fast 1)
+            again; common.ensembles.spread_agreement); the cost per step of each
+  table_s1  the Table S1-sized scene (common.beds.SCENES' table_s1: 9,600 grains, -var fast 1)
             S1_STEPS steps with ACCEL (us per step: LAMMPS' loop time over steps), again for
-            ROUNDOFF_STEPS steps with the Kokkos kernel timer (bench/kokkos_dispatches.cpp,
+            ROUNDOFF_STEPS steps with the Kokkos kernel timer (bench/common/kokkos_dispatches.cpp,
             KTIMES_OUT), once more without it, and on the CPU: |dx| every 100 steps as in
             roundoff, the accel runs' own difference a spread too
   growth    the reduced example tiled 1, 2, 4 times per side (1,200, 9,600, 76,800 grains;
-            bench/step_cost.py's tiled) with ACCEL: us per step and per grain-step
+            common.beds.tiled) with ACCEL: us per step and per grain-step
   host_styles  the Table S1-sized scene with ACCEL as it is and with the style that runs on
             the host every step (the time series) replaced: what its copies between host
             and device cost (timing only: the replacement changes the run)
   host_kernels  the kernel timer on that scene with it replaced (not run by default)
 Writes OUT/summary.md (the tables), OUT/gpu_check.json (every number), OUT/kernel_times.txt
 (and kernel_times_replaced.txt), OUT/logs.tar.gz (the runs' logs and time series) and
-OUT/machine.txt; exits 1 when a round-off check fails.
+OUT/machine.txt; exits 1 when a round-off check fails. The short setting (bench/smoke.py):
+every part a few hundred steps, the growth 1,200 and 9,600 grains only.
 
-    tar -xJf gpu_kit.tar.xz && python3 bench/gpu_check.py --kit gpu_kit --out "$OUT"
+    tar -xJf gpu_kit.tar.xz && python3 bench/gpu/gpu_check.py --kit gpu_kit --out "$OUT"
                                                                    (on the device machine)
-    source scripts/env.sh; /usr/bin/python3 bench/gpu_check.py --out DIR \\
+    source scripts/env.sh; /usr/bin/python3 bench/gpu/gpu_check.py --out DIR \\
         --accel "-k on t 2 -sf kk"                                   (dry run, OpenMP backend)
 """
 import argparse
@@ -49,20 +50,22 @@ from concurrent.futures import ThreadPoolExecutor
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-from example_runs import loop_time, run_lmp    # noqa: E402
-from host_compare import SPREAD_FACTOR, perturbation, spread_agreement    # noqa: E402
-from step_cost import SCENES, prepare_scene, tiled    # noqa: E402
-from time_to_solution import PERTURB as DISPLACEMENT    # noqa: E402  (the ensembles' perturbation, m)
+sys.path.insert(0, os.path.dirname(HERE))
+from common import short    # noqa: E402
+from common.beds import SCENES, prepare_scene, tiled    # noqa: E402
+from common.ensembles import PERTURB as DISPLACEMENT    # noqa: E402  (the ensembles' perturbation, m)
+from common.ensembles import SPREAD_FACTOR, perturbation, spread_agreement    # noqa: E402
+from common.runs import KOKKOS_DISPATCHES, loop_time, run_lmp    # noqa: E402
 from porewater_analysis.dump import read_dump    # noqa: E402
 from porewater_analysis.timeseries import load as load_series    # noqa: E402
 
 GPU_ACCEL = "-k on g 1 -sf kk -pk kokkos neigh half newton off"
 KK_TEST_TOLERANCE = 1e-10      # m: |x| of /kk vs CPU in the style matrix (chute, 1,000 steps)
-ROUNDOFF_STEPS, ROUNDOFF_EVERY = 1000, 100
-CYCLE_FRACTION = 0.05
-S1_STEPS = 10000
-GROWTH_STEPS = {1: 2300, 2: 1150, 4: 575}    # whole fluid intervals (25 steps at -var fast 1)
+ROUNDOFF_STEPS, ROUNDOFF_EVERY = short((1000, 100), (200, 100))
+CYCLE_FRACTION = short(0.05, 0.002)
+S1_STEPS = short(10000, 200)
+# whole fluid intervals (25 steps at -var fast 1)
+GROWTH_STEPS = short({1: 2300, 2: 1150, 4: 575}, {1: 100, 2: 50})
 
 
 def use_kit(kit):
@@ -79,7 +82,7 @@ def accel_threads(accel):
 
 def run(work, name, variables, accel, extra_env=None, edits=()):
     """in.tidal_shear in work/name with -var `variables` (a scene's `data` and `copies`: the
-    default bed tiled, bench/step_cost.py) and its lines `edits` (old, new) replaced: its run
+    default bed tiled, common.beds) and its lines `edits` (old, new) replaced: its run
     loops' seconds, steps, us per step"""
     d = os.path.join(work, name)
     variables = prepare_scene(variables, d, dict(os.environ))
@@ -192,7 +195,7 @@ def part_table_s1(work, accel, hook, out, results):
 HOST_EVERY_STEP = {
     "series": ("fix series all print v_next_row &", "fix series all print ${nout} &"),
 }
-HOST_STEPS = 5000
+HOST_STEPS = short(5000, 200)
 
 
 def part_host_styles(work, accel, results):
@@ -348,8 +351,8 @@ def main():
         use_kit(kit)
     hook = os.path.join(kit, "lib", "kokkos_dispatches.so") if kit else os.path.join(work, "kokkos_dispatches.so")
     if not kit:
-        subprocess.run(["g++", "-O2", "-shared", "-fPIC", "-o", hook,
-                        os.path.join(HERE, "kokkos_dispatches.cpp"), "-ldl"], check=True)
+        subprocess.run(["g++", "-O2", "-shared", "-fPIC", "-o", hook, KOKKOS_DISPATCHES, "-ldl"],
+                       check=True)
     results = {"accel": args.accel, "machine": machine_record(kit)}
     print("\n".join(results["machine"]), flush=True)
     parts = {"roundoff": lambda: part_roundoff(work, args.accel, results),

@@ -16,7 +16,7 @@ two runs of one host that differ only by round-off (A-B of each host, A-C for 20
 hosts agree on a quantity when max |2021 - 2025| (run A) is at most 3 times the largest
 spread. Prints a markdown table, and the cost ratio 2025/2021 of pairs A and B.
 
-  PW_LAMMPS=both scripts/setup.sh && bench/host_compare.py [--model-time 0.5] [--keep DIR]
+  PW_LAMMPS=both scripts/setup.sh && bench/hosts/host_compare.py [--model-time 0.5] [--keep DIR]
   (with the PW_CACHE that setup used)
 """
 import argparse
@@ -31,44 +31,11 @@ import time
 
 import numpy as np
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(REPO, "analysis"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from common import EXAMPLE, REPO  # noqa: E402
+from common.ensembles import SPREAD_FACTOR, perturbation, spread_agreement  # noqa: E402
 from porewater_analysis.timeseries import load as load_series  # noqa: E402
-EXAMPLE = os.path.join(REPO, "examples", "tidal_shear")
-# the time-series columns compared (timeseries.txt of in.tidal_shear), and what they are
-QUANTITIES = [
-    ("x_top", "shear-plate displacement (m)"),
-    ("vx_top", "shear-plate velocity (m/s)"),
-    ("z_wall", "top-plate position (m)"),
-    ("N_grains", "normal stress of the grains on the plate (Pa)"),
-    ("p_mean", "mean pore pressure (Pa)"),
-    ("phi_mean", "mean porosity"),
-    ("coordination", "mean contacts per grain"),
-    ("ke", "grains' kinetic energy (J)"),
-]
-# index variables of in.params one of which is moved by an ulp (the first one present)
-PERTURBED = ["tau", "sigma0", "eps"]
-SPREAD_FACTOR = 3.0    # two runs agree within this many times the largest chaotic spread
-
-
-def spread_agreement(series, compared, spreads):
-    """The time series of two runs against the chaotic spread: `series` {run: {column:
-    array}}, `compared` a pair of runs, `spreads` the pairs of runs that differ by round-off
-    alone. Rows (quantity, what, max |difference| of the compared pair over the series,
-    that of each spread pair, the ratio to the largest spread) for QUANTITIES, and whether
-    every ratio is at most SPREAD_FACTOR."""
-    n = min(len(s["time"]) for s in series.values())
-    worst = lambda a, b, q: float(np.max(np.abs(series[a][q][:n] - series[b][q][:n])))
-    rows, agree = [], True
-    for q, what in QUANTITIES:
-        if q not in series[compared[0]]:
-            continue
-        diff = worst(*compared, q)
-        spread = [worst(a, b, q) for a, b in spreads]
-        ratio = diff / max(spread) if max(spread) > 0 else (0.0 if diff == 0 else math.inf)
-        agree &= ratio <= SPREAD_FACTOR
-        rows.append((q, what, diff, spread, ratio))
-    return rows, agree
 
 
 def shell(host, command, cwd, log):
@@ -109,17 +76,6 @@ def timestep(work):
     if not m:
         sys.exit(f"could not evaluate dt from in.params (see {d})")
     return float(m.group(1))
-
-
-def perturbation():
-    """(name, value) of the first PERTURBED index variable of in.params, moved by one ulp."""
-    text = open(os.path.join(EXAMPLE, "in.params")).read()
-    for name in PERTURBED:
-        m = re.search(rf"^\s*variable\s+{name}\s+index\s+(\S+)", text, re.M)
-        if m:
-            value = float(m.group(1))
-            return name, m.group(1), repr(math.nextafter(value, math.inf))
-    sys.exit(f"none of {PERTURBED} is an index variable of in.params")
 
 
 def start(work, name, host, steps, extra="", ranks=1):

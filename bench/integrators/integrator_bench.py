@@ -4,19 +4,23 @@
 Compares LAMMPS' fix nve/sphere (velocity Verlet), fix nve/sphere/ty3 (sphere's Taylor step)
 and fix nve/sphere/ty3 corrector yes, with pair linear/coulomb (no damping), over
 eps = dt*sqrt(kn/m). Writes integrator_*.png and integrator_results.md into --out
-(default: this folder); bench/RESULTS_integrators.md discusses them. Usage:
-    source scripts/env.sh && nice /usr/bin/python3 bench/integrator_bench.py [--quick]
+(default: this folder); RESULTS.md beside it discusses them. Usage:
+    source scripts/env.sh && nice /usr/bin/python3 bench/integrators/integrator_bench.py [--quick]
+The short setting (bench/smoke.py): --quick with two eps, two integrators and every run a few
+hundred steps.
 """
 import argparse, math, os, re, shutil, statistics, subprocess, sys, tempfile
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "analysis"))
+sys.path.insert(0, os.path.dirname(HERE))
+from common import SMOKE, out_dir, short  # noqa: E402
 from porewater_analysis.dump import read_dump  # noqa: E402
 
-INTEGRATORS = [("nve/sphere", "nve/sphere"), ("nve/sphere/ty3", "nve/sphere/ty3"),
-               ("ty3 corrector yes", "nve/sphere/ty3 corrector yes")]
+INTEGRATORS = short([("nve/sphere", "nve/sphere"), ("nve/sphere/ty3", "nve/sphere/ty3"),
+                     ("ty3 corrector yes", "nve/sphere/ty3 corrector yes")],
+                    [("nve/sphere", "nve/sphere"), ("nve/sphere/ty3", "nve/sphere/ty3")])
 KN_PAIR, KN_GAS = 1.0e4, 2000.0    # stiffness of the two-grain and gas inputs; m = 1
 # the errors a run that blows up stops with
 BLOWUP = ("overlap_limit", "Out of range atoms", "Lost atoms", "Neighbor list overflow")
@@ -24,7 +28,7 @@ WORK = tempfile.mkdtemp(prefix="pw_integrator_")
 
 
 def lmp(inp, **var):
-    """Runs bench/in.<inp> with -var name value; returns (thermo rows, loop time, whether a
+    """Runs bench/integrators/<inp> with -var name value; returns (thermo rows, loop time, whether a
     blow-up error stopped it, e.g. the overlap_limit of pair linear/coulomb)."""
     # stdout line-buffered: the message of an error that aborts MPI is not lost
     cmd = ["stdbuf", "-oL", "lmp", "-in", os.path.join(HERE, inp), "-log", "none", "-echo", "none"]
@@ -174,15 +178,17 @@ def linear_limit(scheme):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true", help="fewer eps, shorter runs (~2 min)")
-    ap.add_argument("--out", default=HERE)
+    ap.add_argument("--out", default=out_dir(HERE))
     args = ap.parse_args()
-    q = args.quick
+    q = args.quick or bool(SMOKE)
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     eps_list = [0.01, 0.02, 0.05, 0.1, 0.2] if q else [0.01, 0.014, 0.02, 0.03, 0.05, 0.07,
                                                        0.1, 0.14, 0.2]
+    eps_list = short(eps_list, [0.07, 0.2])
+    gas_ref = short((20000, 10000), (400, 200))    # steps of the gas' references
     md = ["# integrator_bench.py results" + (" (--quick)" if q else ""), ""]
     lines = {}    # (scene, integrator) -> (eps, steps per unit time, err_x, err_v)
 
@@ -197,7 +203,7 @@ def main():
         md.append("")
 
     # cost per step, interleaved (frictional gas of 343 grains at eps 0.07)
-    repeat, nsteps = (1, 1000) if q else (3, 3000)
+    repeat, nsteps = short((1, 1000) if q else (3, 3000), (1, 100))
     times = {name: [] for name, _ in INTEGRATORS}
     for _ in range(repeat):
         for name, fixargs in INTEGRATORS:
@@ -220,16 +226,17 @@ def main():
     table("(a) head-on frictionless collision, exact solution (t = 0.2, after the rebound)",
           "head-on")
     # oblique collision with friction (b = 0.4 d, mu = 0.5, kt = kn) against a tiny step
-    ref, _ = pair_state("nve/sphere", 1e-4, 0.4, 0.5, 0.3)
-    ref2, _ = pair_state("nve/sphere", 2e-4, 0.4, 0.5, 0.3)
-    md.append("Reference of the oblique case: nve/sphere at eps 1e-4; against eps 2e-4: "
-              "|dx| %.1e, |dv|/v %.1e." % oblique_errors(ref2, ref))
+    ref_eps = short(("1e-4", "2e-4"), ("1e-3", "2e-3"))
+    ref, _ = pair_state("nve/sphere", float(ref_eps[0]), 0.4, 0.5, 0.3)
+    ref2, _ = pair_state("nve/sphere", float(ref_eps[1]), 0.4, 0.5, 0.3)
+    md.append("Reference of the oblique case: nve/sphere at eps %s; against eps %s: "
+              "|dx| %%.1e, |dv|/v %%.1e." % ref_eps % oblique_errors(ref2, ref))
     md.append("")
     for name, fixargs in INTEGRATORS:
         r = [oblique_errors(pair_state(fixargs, e, 0.4, 0.5, 0.3)[0], ref) for e in eps_list]
         lines[("oblique", name)] = (np.array(eps_list), None, np.array([v[0] for v in r]),
                                     np.array([v[1] for v in r]))
-    table("(a') oblique collision with friction (b = 0.4 d, mu = 0.5), reference eps 1e-4",
+    table("(a') oblique collision with friction (b = 0.4 d, mu = 0.5), reference eps %s" % ref_eps[0],
           "oblique")
     print("\n".join(md), flush=True)
 
@@ -238,8 +245,8 @@ def main():
     horizon = 10.0 / w0
     for mu in (0.0, 0.5):
         scene = f"gas mu={mu:g}"
-        ref = gas_state("nve/sphere", 20000, horizon, mu)
-        ref2 = gas_state("nve/sphere", 10000, horizon, mu)
+        ref = gas_state("nve/sphere", gas_ref[0], horizon, mu)
+        ref2 = gas_state("nve/sphere", gas_ref[1], horizon, mu)
         md.append(f"Reference of the gas, mu = {mu:g}: nve/sphere at eps 5e-4; against eps 1e-3: "
                   "rms |dx| %.1e, rms |dv|/v_rms %.1e." % gas_errors(ref2, ref))
         md.append("")
@@ -285,7 +292,7 @@ def main():
     fig.savefig(os.path.join(args.out, "integrator_error.png"), dpi=90)
 
     # (c) energy drift of the frictionless gas (216 grains)
-    nlong = 20000 if q else 100000
+    nlong = short(20000 if q else 100000, 400)
     drift_eps = [0.07] if q else [0.07, 0.14]
     fig, axs = plt.subplots(1, len(drift_eps), figsize=(7 * len(drift_eps), 4.5), squeeze=False)
     md += [f"## (c) Energy drift, frictionless gas of 216 grains, {nlong} steps", "",
@@ -313,9 +320,10 @@ def main():
 
     # stability map: a scan of eps (stability need not be monotone in eps: see the bounce)
     lmp("in.integrator_bed_prep", data=os.path.join(WORK, "bed.data"))
-    nmap = 5000 if q else 20000
-    grid = ([0.03, 0.07, 0.14, 0.3, 0.7, 1.4, 3.0] if q else
-            [0.02, 0.03, 0.05, 0.07, 0.1, 0.14, 0.2, 0.3, 0.5, 0.7, 1.0, 1.4, 2.0, 3.0])
+    nmap = short(5000 if q else 20000, 200)
+    grid = short([0.03, 0.07, 0.14, 0.3, 0.7, 1.4, 3.0] if q else
+                 [0.02, 0.03, 0.05, 0.07, 0.1, 0.14, 0.2, 0.3, 0.5, 0.7, 1.0, 1.4, 2.0, 3.0],
+                 [0.07])
     scenes = ("bounce", "gas", "bed")
     titles = {"bounce": "two-grain bounce", "gas": "frictionless gas (125)",
               "bed": "frictional bed under gravity (325 + 36 fixed)"}

@@ -3,29 +3,34 @@
 the pair style's compute() and of fix darcy/pressure's post_force(), CPU and KOKKOS (one
 OpenMP thread), for one or more builds of the plugin side by side.
 
-Scenes: the 3,044-grain cut of LAMMPS' chute (bench/in.chute_cut, 300 steps) for the pair
-style; the Table S1-sized bed (bench/in.darcy_share_bed, 9,600 grains, fluid every step,
+Scenes: the 3,044-grain cut of LAMMPS' chute (in.chute_cut, 300 steps) for the pair
+style; the Table S1-sized bed (bench/common/in.darcy_share_bed, 9,600 grains, fluid every step,
 100 + 20 steps) for the fix. Counts do not depend on the load of the machine (valgrind
 counts instructions, not time), so two builds compare exactly.
 
 Usage (after scripts/setup.sh; each PLUGIN_DIR holds a porewater.so):
     source scripts/env.sh
-    /usr/bin/python3 bench/instruction_counts.py [--only pair|darcy] LABEL=PLUGIN_DIR ...
+    /usr/bin/python3 bench/pair/instruction_counts.py [--only pair|darcy] LABEL=PLUGIN_DIR ...
 """
 import argparse, os, re, subprocess, sys, tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.dirname(HERE)
+sys.path.insert(0, os.path.dirname(HERE))
+from common import COMMON, EXAMPLE, REPO, short    # noqa: E402
+
+CHUTE_CUT = os.path.join(HERE, "in.chute_cut")
+DARCY_BED = os.path.join(COMMON, "in.darcy_share_bed")
+PAIR_STEPS, DARCY_STEPS = short((300, 100), (10, 10))
 
 KOKKOS = ["-k", "on", "t", "1", "-sf", "kk"]
 CASES = {
     "pair": [
-        ("pair CPU", "in.chute_cut", [], r"PairLinearCoulomb::compute\(int, int\)"),
-        ("pair /kk", "in.chute_cut", KOKKOS, r"PairLinearCoulombKokkos<Kokkos::OpenMP>::compute\(int, int\)"),
+        ("pair CPU", CHUTE_CUT, [], r"PairLinearCoulomb::compute\(int, int\)"),
+        ("pair /kk", CHUTE_CUT, KOKKOS, r"PairLinearCoulombKokkos<Kokkos::OpenMP>::compute\(int, int\)"),
     ],
     "darcy": [
-        ("darcy CPU", "in.darcy_share_bed", [], r"FixDarcyPressure::post_force\(int\)"),
-        ("darcy /kk", "in.darcy_share_bed", KOKKOS, r"FixDarcyPressureKokkos<Kokkos::OpenMP>::post_force\(int\)|FixDarcyPressure::post_force\(int\)"),
+        ("darcy CPU", DARCY_BED, [], r"FixDarcyPressure::post_force\(int\)"),
+        ("darcy /kk", DARCY_BED, KOKKOS, r"FixDarcyPressureKokkos<Kokkos::OpenMP>::post_force\(int\)|FixDarcyPressure::post_force\(int\)"),
     ],
 }
 
@@ -43,13 +48,13 @@ def count(plugin_dir, script, accel, pattern, workdir):
                LD_LIBRARY_PATH=plugin_dir + ":" + os.environ.get("LD_LIBRARY_PATH", ""))
     out = os.path.join(workdir, "callgrind.out")
     args = ["valgrind", "--tool=callgrind", "--callgrind-out-file=" + out, "lmp", "-in",
-            os.path.join(HERE, script), "-log", "none", "-screen", "none", "-var", "steps", "300"]
-    if script == "in.chute_cut":
+            script, "-log", "none", "-screen", "none", "-var", "steps", str(PAIR_STEPS)]
+    if script == CHUTE_CUT:
         args += ["-var", "pstyle", "linear/coulomb lever radius",
                  "-var", "pcoeff", "* * 200000.0 200000.0 0.5",
                  "-var", "data", os.path.join(lammps_bench(), "data.chute")]
     else:
-        args += ["-var", "steps", "100", "-var", "examples", os.path.join(REPO, "examples", "tidal_shear")]
+        args += ["-var", "steps", str(DARCY_STEPS), "-var", "examples", EXAMPLE]
     subprocess.run(args + accel, cwd=workdir, env=env, check=True, capture_output=True)
     return inclusive_count(out, pattern)
 

@@ -4,11 +4,11 @@
   chute  LAMMPS' bench/in.chute (32,000 grains, frozen base, 26 degrees; a flow: few of the
          neighbours touch), damping off in both styles
   bed    the grains of examples/tidal_shear loaded under the example's stress-controlled plate
-         (bench/in.pair_bed; dry, not sheared): a dense bed, most neighbours in contact. Its
-         data files: --data (e.g. the Table S1 bed of bench/time_to_solution.py --part
-         table_s1), or by default the two shipped beds (the default, coordination ~4.5, and
-         the frictionless one, ~5.6) each replicated 2 x 2 in x and y to Table S1's footprint
-         (4,800 grains; bench/in.replicate_bed -var nz 1)
+         (in.pair_bed; dry, not sheared): a dense bed, most neighbours in contact. Its
+         data files: --data (e.g. the Table S1 bed of bench/time_to_solution/time_to_solution.py
+         --part table_s1), or by default the two shipped beds (the default, coordination ~4.5,
+         and the frictionless one, ~5.6) each replicated 2 x 2 in x and y to Table S1's
+         footprint (4,800 grains; bench/common/in.replicate_bed -var nz 1)
 
 Both styles identical in their trajectories (`linear/coulomb lever radius` against
 `gran/hooke/history kn kt 0 0 mu 0`). Timings: every configuration `--repeat` times,
@@ -16,16 +16,18 @@ interleaved, the median loop time and Pair-section time, and the ratios native/o
 ours is faster). --count instead: callgrind's instruction count of each style's compute()
 (CPU and KOKKOS with one thread), which does not depend on the machine's load.
 --mu 0 compares the frictionless case (native computes and resets the spring, ours skips it).
+The short setting (bench/smoke.py): the default bed's scene only.
 Usage (after scripts/setup.sh):
-    source scripts/env.sh && /usr/bin/python3 bench/pair_bench.py [--scene chute|bed]
+    source scripts/env.sh && /usr/bin/python3 bench/pair/pair_bench.py [--scene chute|bed]
         [--steps 300] [--repeat 3] [--mu 0.5] [--data FILE ...] [--count]
 """
 import argparse, os, re, shutil, statistics, subprocess, sys, tempfile
 
-from instruction_counts import inclusive_count
-
 HERE = os.path.dirname(os.path.abspath(__file__))
-EXAMPLE = os.path.join(HERE, "..", "examples", "tidal_shear")
+sys.path.insert(0, os.path.dirname(HERE))
+from common import EXAMPLE, short    # noqa: E402
+from common.runs import REPLICATE_BED    # noqa: E402
+from instruction_counts import inclusive_count, lammps_bench    # noqa: E402  (this study's own)
 
 # OpenMP threads are not pinned: on a shared machine a thread pinned to a busy core cannot
 # move (one-thread KOKKOS runs were 1.6x slower pinned, and swung 2x between runs), and the
@@ -97,13 +99,14 @@ def bed_scenes(work, data):
     for name in os.listdir(EXAMPLE):
         if name.startswith("in.") or name.startswith("consolidated_"):
             shutil.copy(os.path.join(EXAMPLE, name), work)
-    for name in ("in.pair_bed", "in.replicate_bed"):
-        shutil.copy(os.path.join(HERE, name), work)
+    for path in (os.path.join(HERE, "in.pair_bed"), REPLICATE_BED):
+        shutil.copy(path, work)
     if data:
         return {os.path.basename(d): os.path.abspath(d) for d in data}
     scenes = {}
-    for bed, label in (("consolidated_0", "default bed x2x2 (4,800 grains)"),
-                       ("consolidated_frictionless_0", "frictionless bed x2x2 (4,800 grains)")):
+    beds = [("consolidated_0", "default bed x2x2 (4,800 grains)"),
+            ("consolidated_frictionless_0", "frictionless bed x2x2 (4,800 grains)")]
+    for bed, label in short(beds, beds[:1]):    # the short setting (bench/smoke.py): one
         out = os.path.join(work, bed + "_x2x2.data")
         run(work, [], ["-in", "in.replicate_bed", "-var", "in", bed + ".data", "-var", "out", out,
                        "-var", "nz", "1", "-screen", "none"], 1)
@@ -124,8 +127,7 @@ def main():
     args = ap.parse_args()
     work = tempfile.mkdtemp(prefix="pw_pair_bench_")
     if args.scene == "chute":
-        scenes = {"chute": (args.data or [os.path.expanduser(
-            "~/.cache/lammps-porewater/lammps-29Sep2021u2/bench/data.chute")])[0]}
+        scenes = {"chute": (args.data or [os.path.join(lammps_bench(), "data.chute")])[0]}
         make_args = chute_args
     else:
         scenes = bed_scenes(work, args.data)

@@ -1,104 +1,45 @@
-"""What sets the creep exponent and the contact collapse (bench/fidelity.py --part factors):
+"""What sets the creep exponent and the contact collapse (figures.py --part factors):
 each way the reduced example differs from the original program, alone from the frictionless
 bed (the example's default until the original's bed, factor 1, became it; in.params `bed`),
 then all of them together (the example's `-var original 1`), 2 cycles each (CYCLES).
 
-Beds (prepared once, before any tidal run; their targets fixed in advance):
+Beds (prepared once, before any tidal run; their targets fixed in advance; bench/common/beds.py):
   spread   in.pack/in.consolidate frictionless, log-normal radii of spread 0.009 (the
            original's packing scripts)
   original the same with friction mu_prep MU_PREP_ORIGINAL while packing and consolidating:
            the value that starts the tidal run at the original's coordination, 4.58 (the
-           first row of shared/spec/original_run_contacts.txt), found by bisection on beds alone
+           first row of the original run's contacts, bench/common/original_run_contacts.txt),
+           found by bisection on beds alone
   kn10, kn100  the frictionless bed consolidated again (in.consolidate) at k_n x10, x100
 Every bed runs with the groups of the example kept for its own H and phi (bed_groups):
 the fluid cells' height, mu_f (mu_f H^2/(k T sigma0)) and the plate mass (m_w H/(A Lx Ly T^2)).
+The short setting (bench/smoke.py): two beds (spread, kn10) and four factors, every run a few
+thousand steps, never complete.
 """
 import os
 import shutil
-import sys
 
 import numpy as np
 
-from example_runs import EXAMPLE, FRICTIONLESS, complete, load, prepare, read_cost, run_lmp, timed_run
+import constant_stress
+from common import EXAMPLE, short
+from common.beds import (MU_PREP_ORIGINAL, RESETTLE, SHIPPED_FRICTIONLESS, SPREAD, STIFF,
+                         TARGET_Z, bed_geometry, bed_groups, prepare_bed)
+from common.runs import FRICTIONLESS, complete, load, prepare, read_cost, run_lmp, timed_run
 from porewater_analysis.cycles import PERIOD, after_min_n, factor_metrics, fmt
 from porewater_analysis.original import ORIGINAL_CYCLES
 from porewater_analysis.timeseries import run_parameters
-sys.path.insert(0, EXAMPLE)
-from groups import bed_geometry, bed_parameters as bed_groups    # noqa: E402
 
-KN = 1.16e7                               # examples/tidal_shear/in.params, reduced case
-GAMMA_W = 100.0
-SPREAD = 0.009                            # the original's log-normal spread of ln r
-MU_PREP_ORIGINAL = 0.4 / 3                # --part bisect: 4.53 at 0.4/3, 4.13 at 0.8/3
-TARGET_Z = 4.58                           # the original run's first coordination (t = 0.01 s)
 # cycles per run: 2 (cycle 1 from the unsheared bed, cycle 2 kept); k_n x10 1.6 (cycle 2's
 # creep, phases 0.2-0.6, not its slip), x100 0.6 (cycle 1's creep): 3.2x and 10x the steps
 # of a cycle, at ~3,000 steps/s per run with two side by side on the development machine
 CYCLES, KN10_CYCLES, KN100_CYCLES = 2, 1.6, 0.6
-RESETTLE = 0.05                           # s: the shipped bed consolidated again at k_n x10,
-                                          # x100 (as bench/fidelity_full.py for Table S1's k_n)
-
-# k_n x10, x100 with the wall dashpot's damping ratio gamma_w/(2 sqrt(k_n m)) kept
-STIFF = {"kn10": {"kn": 10 * KN, "gamma_w": GAMMA_W * 10 ** 0.5},
-         "kn100": {"kn": 100 * KN, "gamma_w": GAMMA_W * 10.0}}
-SHIPPED_FRICTIONLESS = "consolidated_frictionless_0.data"
+SHORT_CYCLES = 0.002                      # the short setting's runs
 BEDS = {  # name: (in.pack / in.consolidate -var overrides, the shipped bed, or None: packed anew)
     "spread": ({"radius_spread": SPREAD, "mu_prep": 0.0}, None),
     "kn10": (dict(FRICTIONLESS, **STIFF["kn10"], settle_time=RESETTLE), SHIPPED_FRICTIONLESS),
     "kn100": (dict(FRICTIONLESS, **STIFF["kn100"], settle_time=RESETTLE), SHIPPED_FRICTIONLESS),
 }
-
-
-def prepare_bed(work, name, variables, shipped=None):
-    """pack a bed (or take the shipped one, examples/tidal_shear's data file `shipped`) and
-    consolidate it; the bed's data file"""
-    d = os.path.join(work, "beds", name)
-    out = os.path.join(d, "bed.data")
-    if os.path.exists(out):
-        return out
-    prepare(d)
-    source = shipped or "packed.data"
-    if shipped is None:
-        run_lmp(d, "in.pack", dict(variables, output=source), log="log.pack")
-    run_lmp(d, "in.consolidate", dict(variables, input=source, output="bed.data"),
-            log="log.consolidate")
-    return out
-
-
-def first_coordination(work, name, data, variables):
-    """the coordination of the first time-series row (2.5 ms) of the tidal run on a bed"""
-    d = os.path.join(work, "beds", name, "probe")
-    prepare(d)
-    shutil.copy(data, os.path.join(d, "bed.data"))
-    run_lmp(d, "in.tidal_shear", dict(variables, data="bed.data", run_steps=1170))
-    return load(os.path.join(d, "timeseries.txt"))["coordination"][0]
-
-
-def bisect_mu_prep(work, jobs_map, low=0.0, high=0.4, rounds=3, tol=0.05, probe=None,
-                   target=TARGET_Z):
-    """mu_prep whose bed starts at target: two probes a round (both cores), the bracket cut
-    to the third that holds the target; the probes (mu, z, H, phi) as rows. probe(mu): by
-    default a bed of spread 0.009 and its first coordination by our count"""
-    probes = []
-
-    def first_ours(mu):
-        name = "probe_mu%.4f" % mu
-        data = prepare_bed(work, name, {"radius_spread": SPREAD, "mu_prep": mu})
-        height, phi = bed_geometry(data)
-        z = first_coordination(work, name, data, bed_groups(height, phi))
-        return mu, z, height, phi
-
-    for _ in range(rounds):
-        mus = [low + (high - low) * f for f in (1.0 / 3.0, 2.0 / 3.0)]
-        found = jobs_map(probe or first_ours, mus)
-        probes += found
-        best = min(found, key=lambda p: abs(p[1] - target))
-        if abs(best[1] - target) < tol:
-            break
-        # coordination falls with friction: keep the third that brackets the target
-        (m1, z1, _, _), (m2, z2, _, _) = found
-        low, high = (low, m1) if target > z1 else ((m1, m2) if target > z2 else (m2, high))
-    return sorted(probes)
 
 
 # name: (label, bed or None for the shipped one, in.tidal_shear -var overrides, cycles)
@@ -115,6 +56,8 @@ FACTORS = {
 }
 # the order that keeps both cores busy: the longest first
 RUN_ORDER = ["kn100", "kn10", "bed", "all", "default", "ty3", "relaxed", "spread"]
+# the short setting: a bed packed anew, a shipped one consolidated again, and the factors on them
+SHORT_BEDS, SHORT_RUNS = ("spread", "kn10"), ["kn10", "spread", "default", "ty3"]
 
 
 def factor_variables(work, name):
@@ -136,7 +79,7 @@ def run_factor(work, name):
     variables = factor_variables(work, name)
     if "data" in variables:
         shutil.copy(os.path.join(work, "beds", FACTORS[name][1], "bed.data"), d)
-    return name, timed_run(d, "in.tidal_shear", variables)
+    return name, timed_run(d, "in.tidal_shear", dict(variables, cycles=short(cycles, SHORT_CYCLES)))
 
 
 def original_row(o, cycles):
@@ -227,9 +170,9 @@ def beds_table(work):
 
 
 def run_all(work, jobs_map):
-    beds = dict(BEDS, original=({"radius_spread": SPREAD, "mu_prep": MU_PREP_ORIGINAL}, True))
-    jobs_map(lambda n: prepare_bed(work, n, *beds[n]), list(beds))
-    for name, cpu in jobs_map(lambda n: run_factor(work, n), RUN_ORDER):
+    beds = dict(BEDS, original=({"radius_spread": SPREAD, "mu_prep": MU_PREP_ORIGINAL}, None))
+    jobs_map(lambda n: prepare_bed(work, n, *beds[n]), short(list(beds), list(SHORT_BEDS)))
+    for name, cpu in jobs_map(lambda n: run_factor(work, n), short(RUN_ORDER, SHORT_RUNS)):
         print("%s: %s" % (name, "done before" if cpu is None else "%.0f s CPU" % cpu), flush=True)
 
 
@@ -242,13 +185,14 @@ def bisect_table(probes):
 
 
 # constant-stress repeat for the run closest to the paper: the same protocol as
-# fidelity_stress (N 25 kPa, no forcing, 2 s held, creep over 1-2 s), at two tau/N below the
+# constant_stress (N 25 kPa, no forcing, 2 s held, creep over 1-2 s), at two tau/N below the
 # sheared default's yield (0.30-0.40 at 25 kPa), from that run's unsheared bed
 STRESS_N, STRESS_RATIOS = 25.0e3, (0.2, 0.3)
 
 
-def constant_stress(work, name, jobs_map):
-    import fidelity_stress
+def held(work, name, jobs_map):
+    """the factor run's settings held at constant stress, STRESS_RATIOS: [(tau/N, result or
+    None before the run is complete)]"""
     variables = factor_variables(work, name)
     variables.pop("cycles")
     recorded = run_parameters(os.path.join(work, "factors", name))
@@ -256,7 +200,7 @@ def constant_stress(work, name, jobs_map):
 
     def one(ratio):
         d = os.path.join(work, "stress_" + name, "r%.2f" % ratio)
-        seconds = fidelity_stress.HOLD_TIME
+        seconds = constant_stress.HOLD_TIME
         out = os.path.join(d, "timeseries.txt")
         if not complete(out, seconds):
             prepare(d)
@@ -264,23 +208,27 @@ def constant_stress(work, name, jobs_map):
                 shutil.copy(os.path.join(work, "beds", FACTORS[name][1], "bed.data"), d)
             run_lmp(d, "in.tidal_shear", dict(
                 variables, amp=0, sigma0=STRESS_N, tau=ratio * STRESS_N,
-                mass_factor=mass_factor * fidelity_stress.SIGMA0 / STRESS_N,
-                run_steps=int(round(seconds / dt))))
+                mass_factor=mass_factor * constant_stress.SIGMA0 / STRESS_N,
+                run_steps=int(round(short(seconds, 0.005) / dt))))
+        if not complete(out, seconds):
+            return ratio, None
         c = load(out)
         r = {"held": abs(np.polyfit(c["time"][-50:], c["x_top"][-50:], 1)[0]) < 1e-2}
         if r["held"]:
-            r.update(fidelity_stress.measure(c))
+            r.update(constant_stress.measure(c))
         return ratio, r
     return jobs_map(one, STRESS_RATIOS)
 
 
 def stress_table(name, results):
-    lines = ["%s, N %.0f kPa held 2 s: gamma_dot over 1-2 s (95 %%), bench/fidelity_stress.py's "
+    lines = ["%s, N %.0f kPa held 2 s: gamma_dot over 1-2 s (95 %%), constant_stress.py's "
              "measure; the frictionless beds (the former default) did not creep (|gamma_dot| < 1e-8 1/s)."
              % (FACTORS[name][0], STRESS_N / 1e3), "",
              "| tau/N | holds | gamma_dot (1/s) | over 0.5-1 s | take-up (mm) |", "|---|---|---|---|---|"]
     for ratio, r in results:
-        if not r["held"]:
+        if r is None:
+            lines.append("| %.2f | not complete | | | |" % ratio)
+        elif not r["held"]:
             lines.append("| %.2f | fails | | | |" % ratio)
         else:
             lines.append("| %.2f | yes | %.1e ± %.1e | %.1e | %.3f |" % (

@@ -16,25 +16,26 @@ Part "creep" (Figure S1): (1) the paper's method, from the same tidal cycles: th
   windows) against tau/N over phases 0.2-0.6 of each cycle while N falls;
   gamma_dot ~ (tau/N)^n fitted per cycle and pooled, with 95 % intervals. (2) Time scaling:
   the default forced 2x slower, every other group kept (SLOW below): the same windows.
-  (3) Constant-stress shear tests (fidelity_stress.py): 8 tau/N x 2 bed states x 2 N, the
+  (3) Constant-stress shear tests (constant_stress.py): 8 tau/N x 2 bed states x 2 N, the
   creep rate of those that hold, n and the yield tau/N of each state.
-Part "full" (fidelity_full.py): the example at Table S1 size on 2 ranks for --budget wall
+Part "full" (table_s1_size.py): the example at Table S1 size on 2 ranks for --budget wall
   seconds (preparation included), its cost per step against the projection and its first
   part of the cycle against the reduced default's at the same phases.
 
 Part "bisect": the friction while preparing that starts the original's bed (size spread
-  0.009) at the original run's coordination (fidelity_factors.bisect_mu_prep).
-Part "factors" (fidelity_factors.py): each difference from the original program alone from
+  0.009) at the original run's coordination (common.beds.bisect_mu_prep).
+Part "factors" (factors.py): each difference from the original program alone from
   the default, then all together (2 cycles; k_n x10 1.6, x100 0.6); one table, one figure.
 Part "factor_stress" --factor NAME: that factor's settings held at constant stress, two tau/N.
 
 Usage (after scripts/setup.sh; source scripts/env.sh):
-    /usr/bin/python3 bench/fidelity.py --part cycle|permeability|creep|full|bisect|factors|all [--work DIR]
-        [--jobs N] [--budget S] [--analyse-only]
+    /usr/bin/python3 bench/paper_figures/figures.py --part cycle|permeability|creep|full|bisect|factors|all
+        [--work DIR] [--jobs N] [--budget S] [--analyse-only]
 `--part all` is cycle, permeability and creep; full runs apart (it needs both cores alone).
 Runs whose output is complete in --work are not repeated; the parameters were fixed before
-any run (examples/tidal_shear/in.params). Each part writes bench/fidelity_<part>_results.md
-(the tables; bench/RESULTS_fidelity.md discusses them) and its PNGs bench/fidelity_*.png.
+any run (examples/tidal_shear/in.params). Each part writes bench/paper_figures/<part>_results.md
+(the tables; RESULTS.md beside it discusses them) and its PNGs there. The short setting
+(bench/smoke.py) runs each run a few thousand steps: none is complete, the tables are empty.
 """
 import argparse
 import os
@@ -46,16 +47,21 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from example_runs import FRICTIONLESS, complete, head_commit, load, prepare, read_cost, timed_run
-import fidelity_factors
-import fidelity_full
-import fidelity_stress
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from common import COMMON, SMOKE, out_dir, short    # noqa: E402
+from common.beds import bisect_mu_prep    # noqa: E402
+from common.runs import FRICTIONLESS, complete, head_commit, load, prepare, read_cost, timed_run    # noqa: E402
+import factors    # noqa: E402
+import table_s1_size    # noqa: E402
+import constant_stress    # noqa: E402
 from porewater_analysis.cycles import (AMP, PERIOD, SLIP_VELOCITY, SMOOTH, creep_points,
                                        cycle_metrics, fmt, inertia_number,
-                                       original_data_file_metrics, power_law, smoothed_velocity)
+                                       original_data_file_metrics, power_law, smoothed_velocity)    # noqa: E402
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+OUT = out_dir(HERE)
 CYCLES = 4
+RUN_CYCLES = short(CYCLES, 0.002)       # what a run runs; a shorter one is never complete
 SIGMA0 = 80.0e3            # Pa: examples/tidal_shear/in.params
 VARIANTS = {  # name: (label, k_c or None for dry, -var overrides)
     "wet": ("k_c 3.5e-13 (default)", 3.5e-13, {}),
@@ -71,7 +77,7 @@ def run_variant(work, name):
     if complete(out, CYCLES * PERIOD):
         return name, None
     prepare(d)
-    return name, timed_run(d, "in.tidal_shear", dict(FRICTIONLESS, **VARIANTS[name][2], cycles=CYCLES))
+    return name, timed_run(d, "in.tidal_shear", dict(FRICTIONLESS, **VARIANTS[name][2], cycles=RUN_CYCLES))
 
 
 def cycle_table(data):
@@ -210,16 +216,22 @@ def creep_report(series, path):
 # grains' own time scale: mu_f x2 (mu_f H^2/(k T sigma0), D T/H^2), plate mass x4
 # (m_w H/(A Lx Ly T^2)); t_contact/T and the inertia number halve
 SLOW = {"freq": 0.2, "mu_f": 3.86e-7, "mass_factor": 1.972, "cycles": 1.6}
+SLOW_RUN_CYCLES = short(SLOW["cycles"], 0.001)
 SLOW_CYCLES = 2        # the creep windows (phases 0.2-0.6) of cycles 1 and 2
+
+
+def load_slow(work):
+    """the 2x slower run's time series, or None before it is complete"""
+    out = os.path.join(work, "slow", "timeseries.txt")
+    return load(out) if complete(out, SLOW["cycles"] / SLOW["freq"]) else None
 
 
 def run_slow(work):
     d = os.path.join(work, "slow")
-    out = os.path.join(d, "timeseries.txt")
-    if not complete(out, SLOW["cycles"] / SLOW["freq"]):
+    if load_slow(work) is None:
         prepare(d)
-        timed_run(d, "in.tidal_shear", dict(FRICTIONLESS, **SLOW))
-    return load(out)
+        timed_run(d, "in.tidal_shear", dict(FRICTIONLESS, **dict(SLOW, cycles=SLOW_RUN_CYCLES)))
+    return load_slow(work)
 
 
 def time_scaling_report(fast, slow, path):
@@ -265,15 +277,13 @@ def load_cycles(work):
             series[name] = (label, load(os.path.join(d, "timeseries.txt")))
             if read_cost(d):
                 costs[name] = read_cost(d)
-    if not series:
-        sys.exit("no complete run in " + work)
     return series, costs
 
 
 def header(part, costs):
     commit = head_commit()
-    lines = ["# Measured by bench/fidelity.py --part %s" % part, "",
-             "`/usr/bin/python3 bench/fidelity.py --part %s`, tables written at commit %s from the runs "
+    lines = ["# Measured by bench/paper_figures/figures.py --part %s" % part, "",
+             "`/usr/bin/python3 bench/paper_figures/figures.py --part %s`, tables written at commit %s from the runs "
              "in --work, on the 2-core "
              "development machine, shared with other jobs (CPU times below)." % (part, commit), ""]
     if costs:
@@ -284,7 +294,7 @@ def header(part, costs):
 
 
 def write(part, lines):
-    open(os.path.join(HERE, "fidelity_%s_results.md" % part), "w").write("\n".join(lines) + "\n")
+    open(os.path.join(OUT, "%s_results.md" % part), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
 
 
@@ -295,7 +305,7 @@ def main():
                              "factor_stress", "all"])
     ap.add_argument("--factor", default="all",
                     help="--part factor_stress: the factor run whose settings are held at "
-                         "constant stress (fidelity_factors.FACTORS)")
+                         "constant stress (factors.FACTORS)")
     ap.add_argument("--work", default="/tmp/pw_fidelity")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--budget", type=float, default=3600.0,
@@ -305,35 +315,35 @@ def main():
     pool = ThreadPoolExecutor(args.jobs)
     jobs_map = lambda f, xs: list(pool.map(f, xs))
     if args.part == "bisect":
-        probes = fidelity_factors.bisect_mu_prep(args.work, jobs_map)
-        write("bisect", header("bisect", {}) + fidelity_factors.bisect_table(probes))
+        probes = bisect_mu_prep(args.work, jobs_map, rounds=short(3, 1))
+        write("bisect", header("bisect", {}) + factors.bisect_table(probes))
         return
     if args.part == "factor_stress":
-        results = fidelity_factors.constant_stress(args.work, args.factor, jobs_map)
-        write("factor_stress", header("factor_stress", {}) + fidelity_factors.stress_table(
+        results = factors.held(args.work, args.factor, jobs_map)
+        write("factor_stress", header("factor_stress", {}) + factors.stress_table(
             args.factor, results))
         return
     if args.part == "factors":
         if not args.analyse_only:
-            fidelity_factors.run_all(args.work, jobs_map)
-        original = original_data_file_metrics(os.path.join(HERE, "original_run_contacts.txt"))
-        lines, results = fidelity_factors.table(args.work, original, 2)
-        first, _ = fidelity_factors.table(args.work, original, 1)
-        fidelity_factors.plot(results, os.path.join(HERE, "fidelity_factors.png"))
+            factors.run_all(args.work, jobs_map)
+        original = original_data_file_metrics(os.path.join(COMMON, "original_run_contacts.txt"))
+        lines, results = factors.table(args.work, original, 2)
+        first, _ = factors.table(args.work, original, 1)
+        factors.plot(results, os.path.join(OUT, "factors.png"))
         costs = {label: read_cost(os.path.join(args.work, "factors", n))
-                 for n, (label, _, _, _) in fidelity_factors.FACTORS.items()}
+                 for n, (label, _, _, _) in factors.FACTORS.items()}
         write("factors", header("factors", {k: v for k, v in costs.items() if v}) + [
-            "## Beds", ""] + fidelity_factors.beds_table(args.work) + [
+            "## Beds", ""] + factors.beds_table(args.work) + [
             "", "## Each factor alone, then all together: cycle 2", ""] + lines + [
             "", "## Cycle 1 (from the unsheared bed)", ""] + first + [
-            "", "![n and the minimum coordination per factor](fidelity_factors.png)"])
+            "", "![n and the minimum coordination per factor](factors.png)"])
         return
     if args.part == "full":
         if not args.analyse_only:
-            fidelity_full.run_full(args.work, args.budget)
+            table_s1_size.run_full(args.work, args.budget)
         series, _ = load_cycles(args.work)
         d = os.path.join(args.work, "full")
-        lines, full = fidelity_full.compare(d, series["wet"][1], PERIOD)
+        lines, full = table_s1_size.compare(d, series["wet"][1], PERIOD)
         write("full", header("full", {"Table S1 size, 2 ranks (the run)": read_cost(d)}) + [
             "## Table S1 size", ""] + lines)
         return
@@ -341,26 +351,31 @@ def main():
         for name, cpu in jobs_map(lambda n: run_variant(args.work, n), VARIANTS):
             print("%s: %s" % (name, "done before" if cpu is None else "%.0f s CPU" % cpu),
                   flush=True)
+    if args.part in ("creep", "all"):
+        slow = run_slow(args.work) if not args.analyse_only else load_slow(args.work)
+        stress = constant_stress.series(args.work, jobs_map, run=not args.analyse_only)
     series, costs = load_cycles(args.work)
+    if not series:
+        if not SMOKE:
+            sys.exit("no complete run in " + args.work)
+        print("no complete run in %s (the short setting): no tables" % args.work)
+        return
     costs = {VARIANTS[n][0]: c for n, c in costs.items()}
     keep = list(range(2, CYCLES + 1))    # cycle 1 starts from the consolidated, unsheared bed
     data = {n: (label, cycle_metrics(c, VARIANTS[n][1] is not None, PERIOD, CYCLES))
             for n, (label, c) in series.items()}
     if args.part in ("cycle", "all"):
-        plot_cycles(series, os.path.join(HERE, "fidelity_cycle.png"))
+        plot_cycles(series, os.path.join(OUT, "cycle.png"))
         write("cycle", header("cycle", costs) + ["## Figure 3: the tidal cycle", ""] +
-              cycle_table(data) + ["", "![stacked cycles](fidelity_cycle.png)"])
+              cycle_table(data) + ["", "![stacked cycles](cycle.png)"])
     if args.part in ("permeability", "all"):
-        plot_permeability(data, keep, os.path.join(HERE, "fidelity_permeability.png"))
+        plot_permeability(data, keep, os.path.join(OUT, "permeability.png"))
         write("permeability", header("permeability", costs) + [
             "## What the pore water changes", "",
             "Over cycles %s (cycle 1 starts from the consolidated, never sheared bed), "
             "mean (min to max):" % ",".join(map(str, keep)), ""] + spread_table(data, keep) + [
-            "", "![slip against permeability](fidelity_permeability.png)"])
+            "", "![slip against permeability](permeability.png)"])
     if args.part in ("creep", "all"):
-        slow = run_slow(args.work) if not args.analyse_only else load(
-            os.path.join(args.work, "slow", "timeseries.txt"))
-        stress = fidelity_stress.series(args.work, jobs_map, run=not args.analyse_only)
         costs["2x slower forcing"] = read_cost(os.path.join(args.work, "slow"))
         lines = header("creep", costs) + [
             "## Figure S1 from the tidal cycles", "",
@@ -368,22 +383,25 @@ def main():
             "to 52 kPa; the paper: 1-3 s into each 5 s cycle); gamma_dot: the slope of the "
             "top layer's displacement over the window, over the plate's height; fitted "
             "log gamma_dot = n log(tau/N) + c over the windows with a positive rate.", ""]
-        lines += creep_report(series, os.path.join(HERE, "fidelity_creep_cycles.png"))
-        lines += ["", "![creep from the cycles](fidelity_creep_cycles.png)", "",
+        lines += creep_report(series, os.path.join(OUT, "creep_cycles.png"))
+        lines += ["", "![creep from the cycles](creep_cycles.png)", "",
                   "## Time scaling: the same bed forced 2x slower", "",
                   "The default (f = 0.4 Hz) against f = 0.2 Hz with %s (every group of the "
                   "example's README but t_contact/T and I kept), cycles 1-%d; windows as above."
                   % (", ".join("%s %s" % kv for kv in SLOW.items()), SLOW_CYCLES), ""]
-        lines += time_scaling_report(series["wet"][1], slow,
-                                     os.path.join(HERE, "fidelity_time_scaling.png"))
-        lines += ["", "![time scaling](fidelity_time_scaling.png)", "",
-                  "## Figure S1 at constant stress", ""]
-        lines += fidelity_stress.report(stress)
+        if slow is not None and "wet" in series:
+            lines += time_scaling_report(series["wet"][1], slow,
+                                         os.path.join(OUT, "time_scaling.png"))
+            lines += ["", "![time scaling](time_scaling.png)"]
+        else:
+            lines += ["(the default's or the slower run is not complete)"]
+        lines += ["", "## Figure S1 at constant stress", ""]
+        lines += constant_stress.report(stress)
         fig, ax = plt.subplots(figsize=(6.5, 4.5))
-        fidelity_stress.plot(stress, ax)
+        constant_stress.plot(stress, ax)
         fig.tight_layout()
-        fig.savefig(os.path.join(HERE, "fidelity_creep_stress.png"), dpi=90)
-        write("creep", lines + ["", "![creep at constant stress](fidelity_creep_stress.png)"])
+        fig.savefig(os.path.join(OUT, "creep_stress.png"), dpi=90)
+        write("creep", lines + ["", "![creep at constant stress](creep_stress.png)"])
 
 
 if __name__ == "__main__":

@@ -1,49 +1,24 @@
-"""The example at Table S1 size (bench/fidelity.py --part full): 9,600 grains, -var full 1,
+"""The example at Table S1 size (figures.py --part full): 9,600 grains, -var full 1,
 on 2 MPI ranks, for as long as one benchmark command of at most an hour allows.
 
-The bed: in.pack and in.consolidate at Table S1 size, both with the reduced case's k_n
-(1.16e7: 10x the time step; preparation only, damped frictionless contacts), then
-in.consolidate again at Table S1's k_n from that bed (the contacts stiffen: the bed rises
-by their overlap, ~1e-4 of a grain). Then in.tidal_shear -var full 1 from phase 0 until
-the wall-clock budget of the run is spent (LAMMPS' timer timeout); the preparation's time
-is reported apart.
+The bed (common.beds.prepare_full): in.pack and in.consolidate at Table S1 size, both with
+the reduced case's k_n (1.16e7: 10x the time step; preparation only, damped frictionless
+contacts), then in.consolidate again at Table S1's k_n from that bed (the contacts stiffen:
+the bed rises by their overlap, ~1e-4 of a grain). Then in.tidal_shear -var full 1 from phase 0
+until the wall-clock budget of the run is spent (LAMMPS' timer timeout); the preparation's
+time is reported apart.
 """
 import os
-import subprocess
 
 import numpy as np
 
-from example_runs import FRICTIONLESS, HERE, load, loop_time, prepare, run_lmp, time_step, timed_run
+from common.beds import prepare_full
+from common.runs import (COPY_US, FRICTIONLESS, HOST_FIX_COPIES, LAUNCH_US, dispatches_per_step,
+                         load, loop_time, prepare, run_lmp, time_step, timed_run)
 
-SOFT_KN = 1.16e7
-SETTLE_TIME = 0.6                   # s: in.pack at most (its halt on the kinetic energy waits
-                                    # for the slow compaction of frictionless grains: > 2 s)
 PERIOD = 5.0                        # s: Table S1's forcing period
-PROJECTED_US_PER_STEP = 430.0       # bench/RESULTS.md: the Table S1-sized scene on 2 ranks
+PROJECTED_US_PER_STEP = 430.0       # bench/tidal_profile: the Table S1-sized scene on 2 ranks
 DT = time_step(1.16e9)              # Table S1's k_n
-
-
-def prepare_full(work, bed="frictionless", folder="full"):
-    """the Table S1-sized bed (in.params -var bed BED: its preparation) in work/folder: in.pack
-    and in.consolidate at the reduced case's k_n, then in.consolidate at Table S1's"""
-    d = os.path.join(work, folder)
-    prepare(d, ["in.tidal_shear_timed"])
-    names = "_1.data" if bed == "original" else "_%s_1.data" % bed
-    packed, final = "packed" + names, "consolidated" + names
-    variables = {"bed": bed, "full": 1}
-    steps = []
-    if not os.path.exists(os.path.join(d, packed)):
-        steps.append(("in.pack", dict(variables, kn=SOFT_KN, settle_time=SETTLE_TIME), 2, "log.pack"))
-    if not os.path.exists(os.path.join(d, "consolidated_soft.data")):
-        steps.append(("in.consolidate", dict(variables, kn=SOFT_KN, output="consolidated_soft.data"),
-                      2, "log.consolidate_soft"))
-    if not os.path.exists(os.path.join(d, final)):
-        # at Table S1's k_n the plate and the grains settle in milliseconds (checked in the log)
-        steps.append(("in.consolidate", dict(variables, input="consolidated_soft.data",
-                                             settle_time=0.05), 2, "log.consolidate"))
-    for infile, variables, ranks, log in steps:
-        run_lmp(d, infile, variables, ranks=ranks, log=log)
-    return d
 
 
 def run_full(work, budget_s):
@@ -59,8 +34,6 @@ def run_full(work, budget_s):
     return d
 
 
-LAUNCH_US, COPY_US = 5.0, 15.0       # GPU latency assumed per dispatch (with fence), per copy
-HOST_FIX_COPIES = 7                 # fix wall/gran on the host: x v f omega torque up, f torque down
 REFERENCE_STEPS = 20000
 REDUCED_PROJECTION_US = 145.0       # examples/tidal_shear/README.md: the shipped case, 1 rank, quiet
 
@@ -77,38 +50,6 @@ def reference_runs(work):
         seconds, steps = loop_time(os.path.join(d, log), last=False)
         out.append(1e6 * seconds / steps)
     return out
-
-
-def read_count(path):
-    words = open(path).readline().split()
-    return {words[i]: int(words[i + 1]) for i in range(0, len(words), 2)}
-
-
-def dispatches_per_step(work, variables=None, folder="dispatches"):
-    """Kokkos dispatches and deep copies per step of the reduced example with -sf kk (the
-    same per step at any size) and -var `variables`: the difference of a 2,000- and a
-    1,000-step run (whole fluid intervals for every N up to 200 that divides 1,000)"""
-    d = os.path.join(work, folder)
-    hook = os.path.join(d, "kokkos_dispatches.so")
-    if not os.path.exists(hook):
-        prepare(d)
-        subprocess.run(["g++", "-O2", "-shared", "-fPIC", "-o", hook,
-                        os.path.join(HERE, "kokkos_dispatches.cpp")], check=True)
-    totals = []
-    for steps in (1000, 2000):
-        out = os.path.join(d, "count_%d.txt" % steps)
-        if os.path.exists(out):
-            totals.append(read_count(out))
-            continue
-        env = dict(os.environ, KOKKOS_PROFILE_LIBRARY=hook, KCOUNT_OUT=out, OMP_NUM_THREADS="1",
-                   OMP_PROC_BIND="false")
-        extra = [a for kv in (variables or {}).items() for a in ("-var", kv[0], str(kv[1]))]
-        subprocess.run(["lmp", "-k", "on", "t", "1", "-sf", "kk", "-in", "in.tidal_shear",
-                        "-var", "run_steps", str(steps), "-screen", "none", "-log", "none"] + extra,
-                       cwd=d, env=env, check=True)
-        totals.append(read_count(out))
-    per = {k: (totals[1][k] - totals[0][k]) / 1000.0 for k in totals[0]}
-    return per["for"] + per["reduce"] + per["scan"], per["deep_copy"]
 
 
 def preparation_time(d):
@@ -132,7 +73,7 @@ def compare(d, reduced, reduced_period):
     reached = full["time"][-1] / PERIOD
     plate_v, plate_n = end_of_preparation(d)
     lines = ["Run: %d steps (%.3f s of model time, phase %.3f of the first cycle) in %.0f s on 2 "
-             "ranks: **%.0f µs per step** against the %.0f µs projected (bench/RESULTS.md, the "
+             "ranks: **%.0f µs per step** against the %.0f µs projected (bench/tidal_profile, the "
              "9,600-grain scene on 2 ranks), %.2fx. The bed's preparation took %.0f s more "
              "(in.pack, in.consolidate twice: their loop times)."
              % (steps, full["time"][-1], reached, seconds, us, PROJECTED_US_PER_STEP,
@@ -153,7 +94,7 @@ def compare(d, reduced, reduced_period):
               "2 cores." % (nine, DT, nine * us * 1e-6 / 86400), "",
               "On a GPU (projected, not measured: no device was lent): the /kk run dispatches "
               "%.1f kernels and %.1f deep copies per step (counted on the host backend with "
-              "bench/kokkos_dispatches.cpp, the same per step at any size), and fix wall/gran "
+              "bench/common/kokkos_dispatches.cpp, the same per step at any size), and fix wall/gran "
               "(no /kk in 29Sep2021) moves ~%d arrays between host and device each step. At "
               "%.0f µs per dispatch with its fence and %.0f µs per copy (assumed, typical of "
               "CUDA; 9,600 grains are too few to fill the device, so latency bounds the step): "

@@ -4,58 +4,44 @@
 per-step hooks, communication, neighbour checks, force clearing), on one rank, for one or
 more builds of the plugin side by side.
 
-Scenes (SCENES), both with -var fast 1:
+Scenes (bench/common/beds.py: SCENES, tiled), both with -var fast 1:
   reduced   the reduced example on one rank, STEPS steps (1,200 grains, fluid every 25
             steps, 3 time-series rows)
   table_s1  the Table S1-sized scene on one rank, S1_STEPS steps: the default bed replicated
-            2 x 2 x 2 (bench/in.replicate_bed: 9,600 grains in 0.52 x 0.26 x 0.5 m, as
-            bench/tidal_profile.py), -var full 1 with the reduced k_n it was consolidated at
-            (the cost of a step does not depend on k_n; the bed stays at rest)
+            2 x 2 x 2 (bench/common/in.replicate_bed: 9,600 grains in 0.52 x 0.26 x 0.5 m),
+            -var full 1 with the reduced k_n it was consolidated at (the cost of a step does
+            not depend on k_n; the bed stays at rest)
   growth    the reduced example tiled c x c x c (c = 1, 2, 4: 1,200, 9,600 and 76,800 grains),
             the reduced case's fluid cells tiled with it (grid 3c x 2c x 3c+1), one build, a
             column per size: what grows faster than the grain count (GROWTH_STEPS steps)
 Counts do not depend on the machine's load (valgrind counts instructions, not time): two
 builds compare exactly, beside other work. One rank: on several, MPI's collectives poll
 while they wait, and a rank's count then holds its wait for the others (per-rank time is
-LAMMPS' timer's job, bench/time_to_solution.py).
+LAMMPS' timer's job, step_time.py).
 
 Usage (after scripts/setup.sh; each PLUGIN_DIR holds a porewater.so; NAME=VALUE after it
 are further -var settings of that configuration, e.g. own=build/plugin,one_pass=0):
     source scripts/env.sh
-    /usr/bin/python3 bench/step_cost.py [--scene reduced|table_s1] [--steps N]
+    /usr/bin/python3 bench/step_cost/step_cost.py [--scene reduced|table_s1] [--steps N]
                                         [--markdown FILE] LABEL=PLUGIN_DIR[,NAME=VALUE...] ...
-    /usr/bin/python3 bench/step_cost.py --scene growth [--markdown FILE] LABEL=PLUGIN_DIR
+    /usr/bin/python3 bench/step_cost/step_cost.py --scene growth [--markdown FILE] LABEL=PLUGIN_DIR
 """
 import argparse
 import os
 import re
-import shutil
 import subprocess
 import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-from example_runs import prepare    # noqa: E402
+sys.path.insert(0, os.path.dirname(HERE))
+from common import short    # noqa: E402
+from common.beds import SCENES, prepare_scene, tiled    # noqa: E402
 
 STEPS, S1_STEPS = 2000, 400
-# scene: (grains, in.tidal_shear -var overrides)
-SCENES = {"reduced": (1200, {"fast": 1}),
-          "table_s1": (9600, {"fast": 1, "full": 1, "kn": 1.16e7, "data": "bed_9600.data"})}
 # growth: copies c per side, steps (multiples of the fluid interval, 25; the time series
 # writes a row every 575 steps)
-GROWTH_STEPS = {1: 1150, 2: 575, 4: 100}
-CELL_Z = 0.08176                # examples/tidal_shear/in.bed_original, the reduced case
-
-
-def tiled(copies):
-    """the reduced example tiled copies^3 times: grains, -var overrides"""
-    if copies == 1:
-        return SCENES["reduced"]
-    return (1200 * copies ** 3, {
-        "fast": 1, "data": "bed_x%d.data" % copies, "copies": copies, "ngrains": 1200 * copies ** 3,
-        "lx": 0.26 * copies, "ly": 0.13 * copies, "grid_x": 3 * copies, "grid_y": 2 * copies,
-        "grid_z": 3 * copies + 1, "cell_z": CELL_Z})
+GROWTH_STEPS = short({1: 1150, 2: 575, 4: 100}, {1: 25, 2: 25})
 RUN_LOOP = r"LAMMPS_NS::Verlet::run\(int\)"
 HOOKS = ("initial_integrate", "post_integrate", "pre_exchange", "pre_neighbor", "pre_force",
          "post_force", "final_integrate", "end_of_step")
@@ -81,23 +67,6 @@ def inclusive_counts(profile):
             name = m.group(2).strip()
             counts[name] = max(counts.get(name, 0), int(m.group(1).replace(",", "")))
     return counts
-
-
-def prepare_scene(variables, work, env, bed=None):
-    """the example's inputs in work and a scene's bed (its `data`: the file `bed` if given,
-    else the default bed tiled `copies` times per side, 2 unless given); the -var overrides
-    for in.tidal_shear"""
-    variables = dict(variables)
-    copies = variables.pop("copies", 2)
-    prepare(work, ["in.replicate_bed"])
-    if bed:
-        shutil.copy(bed, os.path.join(work, variables["data"]))
-    elif "data" in variables:
-        subprocess.run(["lmp", "-in", "in.replicate_bed", "-log", "none", "-screen", "none",
-                        "-var", "out", variables["data"]] + sum(
-                            (["-var", n, str(copies)] for n in ("nx", "ny", "nz")), []),
-                       cwd=work, env=env, check=True, capture_output=True)
-    return variables
 
 
 def with_settings(text):

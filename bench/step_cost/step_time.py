@@ -4,21 +4,21 @@ Modify, Other: min, mean and max over the ranks) and µs per step, for builds of
 and MPI processor grids side by side, run after run in turn (ABAB...) so that the machine's
 drift falls on all of them; the load average before and after each run recorded.
 
-The scene is bench/step_cost.py's `table_s1` (the default bed replicated 2 x 2 x 2, 9,600
+The scene is bench/common/beds.py's `table_s1` (the default bed replicated 2 x 2 x 2, 9,600
 grains, -var full 1 -var fast 1 at the k_n it was consolidated at) or `reduced` (the
 example, -var fast 1), STEPS steps on RANKS ranks. Time is the machine's: run it alone (no tests, no other benchmark beside it).
 
 Usage (source scripts/env.sh first):
-    /usr/bin/python3 bench/step_time.py [--steps N] [--repeat K] [--markdown FILE] \
+    /usr/bin/python3 bench/step_cost/step_time.py [--steps N] [--repeat K] [--markdown FILE] \
         LABEL=PLUGIN_DIR[@COMMIT][#GRID][,NAME=VALUE...] ...
 COMMIT: the example's inputs as of that commit (a build older than today's inputs); GRID:
 in.tidal_shear's -var processor_grid, e.g. '#2 1 1' (the grid LAMMPS used is read from
 its log); NAME=VALUE: further -var settings of that configuration (e.g. ',one_pass=0').
 
-    /usr/bin/python3 bench/step_time.py --growth [--repeat K] [--markdown FILE] \
+    /usr/bin/python3 bench/step_cost/step_time.py --growth [--repeat K] [--markdown FILE] \
         [--figure PNG] [--gpu-json JSON] PLUGIN_DIR      (PLUGIN_DIR "replot": the figure
                                                           again from the --markdown table)
-the reduced example tiled 1, 2, 4 times per side (step_cost.py's `tiled`: 1,200, 9,600,
+the reduced example tiled 1, 2, 4 times per side (common.beds.tiled: 1,200, 9,600,
 76,800 grains, the fluid cells tiled with it) on 1 and 2 ranks, with and without the pore
 water (-var fluid 0): µs per step and per grain-step, and the fluid's share of the step
 (1 - dry / wet), every configuration in turn, K times; the fastest run of each.
@@ -32,13 +32,15 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-from example_runs import EXAMPLE, run_lmp    # noqa: E402
-from step_cost import SCENES, prepare_scene, tiled, with_settings    # noqa: E402
+sys.path.insert(0, os.path.dirname(HERE))
+from common import EXAMPLE, REPO, short    # noqa: E402
+from common.beds import SCENES, prepare_scene, tiled    # noqa: E402
+from common.runs import run_lmp    # noqa: E402
+from step_cost import with_settings    # noqa: E402  (this study's own)
 
 STEPS, RANKS, REPEAT = 20000, 2, 3
 # growth: copies per side -> steps (multiples of the time series' 575 and the fluid's 25)
-GROWTH_TIMED_STEPS = {1: 23000, 2: 5750, 4: 1150}
+GROWTH_TIMED_STEPS = short({1: 23000, 2: 5750, 4: 1150}, {1: 575, 2: 25})
 SECTIONS = ("Pair", "Neigh", "Comm", "Output", "Modify", "Other")
 
 
@@ -54,7 +56,7 @@ def parse_build(text):
 
 def inputs_at(commit, work):
     """the example's in.* files as of commit, over the current ones in work"""
-    root = os.path.dirname(HERE)    # ls-tree's paths are relative to the folder it runs in
+    root = REPO    # ls-tree's paths are relative to the folder it runs in
     folder = os.path.relpath(EXAMPLE, root)
     names = subprocess.run(["git", "-C", root, "ls-tree", "--name-only", commit, folder + "/"],
                            capture_output=True, text=True, check=True).stdout.split()
@@ -190,7 +192,7 @@ def growth_figure(rows, path, gpu=None):
         a.plot([r[0] for r in mine], [r[2] for r in mine], marker=marker, label="%d rank%s" % (
             ranks, "s" if ranks > 1 else ""))
         b.plot([r[0] for r in mine], [100 * r[3] for r in mine], marker=marker)
-    if gpu:    # bench/gpu_check.py's growth rows on a GPU: grains, steps, us per step, per grain-step
+    if gpu:    # bench/gpu/gpu_check.py's growth rows on a GPU: grains, steps, us per step, per grain-step
         a.plot([r[0] for r in gpu["growth"]], [r[3] for r in gpu["growth"]], marker="^", color="k",
                label="one GPU (%s), /kk" % gpu.get("device", "H200"))
         a.set_yscale("log")
@@ -214,13 +216,13 @@ def main():
     ap.add_argument("--scene", choices=sorted(SCENES), default="table_s1")
     ap.add_argument("--steps", type=int, default=STEPS)
     ap.add_argument("--bed", help="the scene's grains from this data file (e.g. the prepared "
-                    "Table S1 bed, fidelity_full.prepare_full) instead of the replicated bed")
+                    "Table S1 bed, common.beds.prepare_full) instead of the replicated bed")
     ap.add_argument("--ranks", type=int, default=RANKS)
     ap.add_argument("--repeat", type=int, default=REPEAT)
     ap.add_argument("--markdown", help="write the table here too")
     ap.add_argument("--growth", action="store_true", help="the tiled scenes, one build")
     ap.add_argument("--figure", help="--growth: the figure's PNG")
-    ap.add_argument("--gpu-json", help="--growth: bench/gpu_check.py's gpu_check.json, its growth "
+    ap.add_argument("--gpu-json", help="--growth: bench/gpu/gpu_check.py's gpu_check.json, its growth "
                     "rows drawn beside (measured on a GPU machine)")
     args = ap.parse_args()
     if args.growth and args.builds == ["replot"]:    # the figure again from --markdown's table
@@ -251,7 +253,7 @@ def main():
             print("%s run %d: %.1f s" % (label, k + 1, results[label][-1][1]), flush=True)
     own = "; ".join("%s: %s" % (b[0], " ".join("-var %s %s" % kv for kv in b[4].items()))
                     for b in builds if b[4])
-    lines = ["LAMMPS' timer of bench/step_cost.py's scene `%s` (%s)%s%s, "
+    lines = ["LAMMPS' timer of the scene `%s` (%s)%s%s, "
              "%d steps on %d ranks, builds run in turn, %d times each." % (
                  args.scene, " ".join("-var %s %s" % kv for kv in SCENES[args.scene][1].items()),
                  " with each configuration's own settings over those (%s)" % own if own else "",

@@ -2,7 +2,7 @@
 """examples/tidal_shear: what each part of the scene costs, and what `every N` costs in error.
 
 Part "profile": loop time of the same grains run four ways, interleaved, median of --repeat:
-  granular  bench/in.tidal_granular: pair, floor, gravity, nve/sphere only (what a plain
+  granular  in.tidal_granular: pair, floor, gravity, nve/sphere only (what a plain
             LAMMPS granular script does)
   dry       in.tidal_shear -var fluid 0: plate, shear layer, held bottom, outputs, no water
   wet1      -var fluid_every 1 -var interpolate step: the fluid stepped every grain step
@@ -10,7 +10,7 @@ Part "profile": loop time of the same grains run four ways, interleaved, median 
   wet10held in.tidal_shear as it is: every 10th, grain forces interpolated on fluid steps
             only (`interpolate fluid`), the example's default
   on two scenes: the reduced example (1,200 grains, grid 3x2x4) and a Table S1-sized bed
-  (9,600 grains, grid 6x3x6, `-var full 1`; bench/in.replicate_bed builds it from the
+  (9,600 grains, grid 6x3x6, `-var full 1`; bench/common/in.replicate_bed builds it from the
   reduced bed, so it runs at the reduced stiffness: the cost of a step does not depend on
   k_n, only the number of steps does). The Table S1 scene also runs on 2 MPI ranks, and
   its per-step time projects the wall time of Table S1's 2.1e8 steps (45 s analysed) and
@@ -22,26 +22,27 @@ Part "every": error of the tidal_shear time series against the fluid stepped eve
   a 100x tighter solver tolerance gives the floor below which differences are the
   chaotic growth of round-off, not the fluid step.
 
-Part "long": one long run of the reduced example (--long-steps, default 1e6 grain steps,
-  2.1 forcing cycles) on --ranks MPI ranks: every sampled value finite, the grains' kinetic
+Part "long": one long run of the reduced example (--long-steps, default 1e6 grain steps)
+  on --ranks MPI ranks: every sampled value finite, the grains' kinetic
   energy bounded (largest value in each forcing cycle), the plate within the bed's range,
   and fix darcy/pressure's fluid balance (stored = inflow + grain source) closing: its
   residual against the allowance the solver tolerance permits. --closed: the same with a
   closed box (`top noflow`) and tol 1e-13, where the residual is round-off.
 
 Usage (after scripts/setup.sh):  source scripts/env.sh
-    /usr/bin/python3 bench/tidal_profile.py [--part profile|every|all] [--repeat 3]
+    /usr/bin/python3 bench/tidal_profile/tidal_profile.py [--part profile|every|all] [--repeat 3]
         [--steps 10000] [--horizon 47000]
-Writes bench/tidal_profile_results.md.
+Writes tidal_profile_results.md beside this script (--out).
 """
 import argparse, os, re, shutil, statistics, subprocess, sys, tempfile
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-EXAMPLE = os.path.join(HERE, "..", "examples", "tidal_shear")
-sys.path.insert(0, os.path.join(HERE, "..", "analysis"))
-from porewater_analysis.timeseries import load as read_series  # noqa: E402
+sys.path.insert(0, os.path.dirname(HERE))
+from common import EXAMPLE, out_dir  # noqa: E402
+from common.runs import REPLICATE_BED  # noqa: E402
+from porewater_analysis.timeseries import load as read_series, run_parameters  # noqa: E402
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMP_NUM_THREADS="1")
 STEPS_S1 = {"45 s analysed": 45.0 / 2.14e-7, "59 s run": 59.0 / 2.14e-7}
@@ -71,8 +72,8 @@ def prepare(workdir):
     for name in os.listdir(EXAMPLE):
         if name.startswith("in.") or name.endswith(".data"):
             shutil.copy(os.path.join(EXAMPLE, name), workdir)
-    for name in ("in.tidal_granular", "in.replicate_bed"):
-        shutil.copy(os.path.join(HERE, name), workdir)
+    for path in (os.path.join(HERE, "in.tidal_granular"), REPLICATE_BED):
+        shutil.copy(path, workdir)
     run_lmp(workdir, "in.replicate_bed", {"in": "consolidated_frictionless_0.data", "out": "bed_9600.data"},
             timed=False)
 
@@ -135,7 +136,7 @@ def every_sweep(workdir, horizon, ranks, report):
                 shutil.copy(os.path.join(workdir, f), run_dir)
         if "1e-12" in name:  # the example's fix line gains a tighter tolerance
             src = open(os.path.join(run_dir, "in.tidal_shear")).read()
-            src = edited(src, "interpolate ${interpolate} &", "interpolate ${interpolate} tol 1e-12 &")
+            src = edited(src, "solver ${solver_args} &", "solver ${solver_args} tol 1e-12 &")
             open(os.path.join(run_dir, "in.tidal_shear"), "w").write(src)
         t = run_lmp(run_dir, "in.tidal_shear", dict(variables, run_steps=horizon, samples=2000), ranks)
         results[name] = (t, read_series(os.path.join(run_dir, "timeseries.txt")))
@@ -176,7 +177,7 @@ def long_run(workdir, steps, ranks, closed, report):
     t = run_lmp(workdir, "in.tidal_shear", {"run_steps": steps}, ranks)
     s = read_series(os.path.join(workdir, "timeseries.txt"))
     values = np.column_stack(list(s.values()))
-    cycle = np.floor(s["time"] * 1.0).astype(int)  # reduced case: f = 1 Hz
+    cycle = np.floor(s["time"] * run_parameters(workdir)["freq"]).astype(int)
     report.append("## Part 3: a long run" + (" in a closed box (top noflow, tol 1e-13)" if closed else "") + "\n")
     report.append(f"{steps} grain steps of the reduced example (t = 0 to {s['time'][-1]:.3f} s) "
                   f"on {ranks} MPI rank(s): loop time {t:.0f} s, {len(s['time'])} samples, "
@@ -204,9 +205,9 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--steps", type=int, default=10000)
     ap.add_argument("--horizon", type=int, default=47000)
-    ap.add_argument("--out", default=os.path.join(HERE, "tidal_profile_results.md"))
+    ap.add_argument("--out", default=os.path.join(out_dir(HERE), "tidal_profile_results.md"))
     args = ap.parse_args()
-    report = ["# bench/tidal_profile.py results\n", f"`{' '.join(sys.argv[1:])}`, "
+    report = ["# bench/tidal_profile/tidal_profile.py results\n", f"`{' '.join(sys.argv[1:])}`, "
               f"{os.cpu_count()} cores, load average before the run "
               f"{os.getloadavg()[0]:.2f}.\n"]
     with tempfile.TemporaryDirectory() as workdir:

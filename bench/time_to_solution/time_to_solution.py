@@ -2,13 +2,14 @@
 """Time to solution of examples/tidal_shear: the chaotic spread of the outputs the paper
 reports, each numerical knob's error against that spread, and what each costs.
 
-Part "ensemble": the default run and ENSEMBLE - 1 copies whose sheared bed differs at the
+Part "ensemble" (its sizes and metrics: bench/common/ensembles.py; bench/fidelity/ensemble.py
+  --run default makes the same runs): the default run and ENSEMBLE - 1 copies whose sheared bed differs at the
   start by round-off: every grain of it moved by a random displacement of up to PERTURB
   along each axis (in.tidal_shear -var perturb, perturb_seed K), CYCLES cycles each, 1 rank.
 Part "ensemble_np2": the default and NP2_ENSEMBLE - 1 of the same perturbed starts (seeds
   1, 2, ...: the same grains as the 1-rank members of those seeds) on 2 MPI ranks, one at a
   time on both cores: whether the decomposition shifts the outputs beyond the chaos.
-  Per run, the metrics (METRICS) averaged over cycles 2-4 (cycle 1 starts from the unsheared
+  Per run, the metrics (SETTING_METRICS) averaged over cycles 2-4 (cycle 1 starts from the unsheared
   bed), and the creep exponent n pooled over the windows of cycles 2-4. The band of a metric:
   the 95 % prediction interval of one more run of the ensemble, mean +- t(0.975, N-1) s
   sqrt(1 + 1/N) over its N members: a run that differs from the default by round-off alone
@@ -18,21 +19,23 @@ Part "layout": the default on the 2 cores as 2 MPI ranks, and as 1 rank x 2 Open
   with /kk (each alone on the machine: wall time).
 Part "fast": the preset -var fast 1 (in.params), likewise.
 Part "table_s1": the Table S1 case (-var full 1, 9,600 grains, its bed prepared as the
-  default's, fidelity_full.prepare_full) on both cores (2 MPI ranks) for TABLE_S1_BUDGET wall
+  default's, common.beds.prepare_full) on both cores (2 MPI ranks) for TABLE_S1_BUDGET wall
   seconds with the default settings and with -var fast 1: the cost per step and per second of
   model time, and the 45 s of Table S1 projected; on a GPU projected from the Kokkos dispatches
-  counted per step (bench/kokkos_dispatches.cpp) at assumed latencies.
-Part "report" (no runs): the tables (bench/time_to_solution_results.md) and the figure
-  (bench/time_to_solution.png) from the runs in --work.
+  counted per step (bench/common/kokkos_dispatches.cpp) at assumed latencies.
+Part "report" (no runs): the tables (time_to_solution_results.md) and the figure
+  (time_to_solution.png) beside this script, from the runs in --work.
 
 Costs: the CPU seconds of each 1-rank run (two run side by side, one per core, so CPU time
 is the wall time a run takes on a core of its own), the wall seconds of the runs on both
 cores; every run records the load average before and after (cost.txt).
 
 Usage (after scripts/setup.sh; source scripts/env.sh):
-    /usr/bin/python3 bench/time_to_solution.py --part ensemble|knobs|layout|fast|report [--work DIR]
-        [--jobs N] [--only NAME,...]
-Runs complete in --work are not repeated.
+    /usr/bin/python3 bench/time_to_solution/time_to_solution.py --part ensemble|knobs|layout|fast|report
+        [--work DIR] [--jobs N] [--only NAME,...]
+Runs complete in --work are not repeated. The short setting (bench/smoke.py): every run a few
+thousand steps (none complete; the report says so); table_s1 needs the 9,600-grain bed's
+preparation and is not part of it.
 """
 import argparse
 import os
@@ -41,19 +44,20 @@ import sys
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
-from scipy import stats
-
-from example_runs import complete, head_commit, load, loop_time, prepare, read_cost, timed_run
-import fidelity_full
-from porewater_analysis.cycles import creep_points, cycle_metrics, factor_metrics, power_law
-from porewater_analysis.timeseries import run_parameters
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-CYCLES, PERIOD = 4, 2.5                 # in.params (reduced case): f = 0.4 Hz
-KEEP = (2, 3, 4)                        # cycle 1 starts from the unsheared bed
-ENSEMBLE, NP2_ENSEMBLE = 8, 6          # members on 1 rank, on 2 ranks
-PERTURB = 1.0e-12                       # m: the largest random displacement of a bed grain
-CELL_Z = 0.08176                        # in.params, the default bed's fluid cells
+sys.path.insert(0, os.path.dirname(HERE))
+from common import SMOKE, out_dir    # noqa: E402
+from common.beds import CELL_Z, prepare_full    # noqa: E402
+from common.ensembles import (CYCLES, KEEP, PERIOD, PERTURB, band, members, np2_members,    # noqa: E402
+                              run_one)
+from common.ensembles import SETTING_METRICS as METRICS    # noqa: E402
+from common.runs import (COPY_US, HOST_FIX_COPIES, LAUNCH_US, TIDAL_SHEAR_TIMED, complete,    # noqa: E402
+                         dispatches_per_step, freeze_plugin, head_commit, load, loop_time, prepare,
+                         read_cost, timed_run)
+from porewater_analysis.cycles import creep_points, cycle_metrics, factor_metrics, power_law    # noqa: E402
+from porewater_analysis.timeseries import run_parameters    # noqa: E402
+
 # the default's fluid grid is 3 x 2 x 4 cells of 0.087 x 0.065 x 0.082 m (4.3 x 3.3 x 4.1
 # diameters, the original's ~4.4); the other two keep the active layers' top face where it is
 # (3 x 0.08176 = 6 x 0.04088 = 2 x 0.12264 m, just under the plate)
@@ -104,20 +108,6 @@ REPLICATES = {"eps0.1": ("eps0.1", "eps0.1_again"), "eps0.14": ("eps0.14", "eps0
 # round-off in another way than the ensemble's: a check of the band
 ROUNDOFF_ONLY = ("skin0.2", "skin0.8", "check10", "np2", "kk2", "np2_again")
 
-# key of porewater_analysis.cycles.factor_metrics (per cycle), label, scale, format
-METRICS = [
-    ("slip", "slip (mm)", 1e3, "%.0f"),
-    ("onset", "onset (phase)", 1.0, "%.3f"),
-    ("end", "end (phase)", 1.0, "%.3f"),
-    ("peak", "peak velocity (m/s)", 1.0, "%.3f"),
-    ("dilation", "dilation (mm)", 1e3, "%.1f"),
-    ("z_min", "min coordination", 1.0, "%.2f"),
-    ("suction", "suction in slip (A)", 1.0, "%.3f"),
-    ("v_creep", "creep velocity 0.2-0.6 (um/s)", 1e6, "%.1f"),
-    ("n", "creep exponent n, cycles 2-4", 1.0, "%.2f"),
-]
-
-
 TABLE_S1_BUDGET = 600                   # wall s of each Table S1 run
 TABLE_S1_TIME, TABLE_S1_KN = 45.0, 1.16e9   # s of model time (9 cycles of 5 s), k_n
 GOAL_HOURS = 12.0
@@ -125,13 +115,13 @@ GOAL_HOURS = 12.0
 
 def table_s1(work, run=True):
     """the Table S1 case with the default settings and -var fast 1 on 2 ranks: lines"""
-    bed = fidelity_full.prepare_full(work, bed="original", folder="table_s1_bed") if run else None
+    bed = prepare_full(work, bed="original", folder="table_s1_bed") if run else None
     lines = ["| settings | steps in %d s | µs per step | Δt (s) | model s per wall hour | "
              "45 s of Table S1 (h) | load before/after |" % TABLE_S1_BUDGET, "|---|---|---|---|---|---|---|"]
     for name, variables in (("default", {}), ("fast", {"fast": 1})):
         d = os.path.join(work, "table_s1_" + name)
         if run and not read_cost(d):
-            prepare(d, ["in.tidal_shear_timed"])
+            prepare(d, [TIDAL_SHEAR_TIMED])
             shutil.copy(os.path.join(bed, "consolidated_1.data"), d)
             left = TABLE_S1_BUDGET
             timed_run(d, "in.tidal_shear_timed", dict(variables, full=1, timeout="%02d:%02d:%02d" % (
@@ -148,40 +138,16 @@ def table_s1(work, run=True):
     # on a GPU: latency-bound at this size; the dispatches per step of each setting's /kk run
     lines += ["", "| settings | kernels per step | deep copies per step | GPU µs per step (%.0f µs "
               "a kernel, %.0f µs a copy, +%d host copies for fix wall/gran) | 45 s of Table S1 "
-              "on a GPU (h) |" % (fidelity_full.LAUNCH_US, fidelity_full.COPY_US,
-                                   fidelity_full.HOST_FIX_COPIES), "|---|---|---|---|---|"]
+              "on a GPU (h) |" % (LAUNCH_US, COPY_US, HOST_FIX_COPIES), "|---|---|---|---|---|"]
     for name, variables in (("default", {}), ("fast", {"fast": 1})):
-        kernels, copies = fidelity_full.dispatches_per_step(work, variables, "dispatches_" + name)
-        us = kernels * fidelity_full.LAUNCH_US + (copies + fidelity_full.HOST_FIX_COPIES) * \
-            fidelity_full.COPY_US
+        kernels, copies = dispatches_per_step(work, variables, "dispatches_" + name)
+        us = kernels * LAUNCH_US + (copies + HOST_FIX_COPIES) * COPY_US
         d = os.path.join(work, "table_s1_" + name)
         if read_cost(d):
             dt = run_parameters(d)["dt"]
             lines.append("| %s | %.1f | %.1f | %.0f | %.1f |" % (
                 name, kernels, copies, us, TABLE_S1_TIME / dt * us * 1e-6 / 3600))
     return lines
-
-
-def members(prefix="member", count=ENSEMBLE):
-    """name: -var overrides of an ensemble's runs (member0 the unperturbed default; member K
-    perturbed with seed K, so that the same K starts from the same grains on any layout)"""
-    runs = {prefix + "0": {}}
-    for k in range(1, count):
-        runs["%s%d" % (prefix, k)] = {"perturb": PERTURB, "perturb_seed": k}
-    return runs
-
-
-def np2_members():
-    return members("np2_member", NP2_ENSEMBLE)
-
-
-def run_one(work, name, variables, ranks=1, args=(), threads=1):
-    d = os.path.join(work, name)
-    if complete(os.path.join(d, "timeseries.txt"), CYCLES * PERIOD):
-        return name, None
-    prepare(d)
-    return name, timed_run(d, "in.tidal_shear", dict(variables, cycles=CYCLES), ranks=ranks,
-                           args=args, threads=threads)
 
 
 def metrics(work, name):
@@ -207,23 +173,13 @@ def metrics(work, name):
     return out
 
 
-def band(values, k=1, family=False):
-    """mean and the 95 % prediction interval's half-width of the mean of k more members; family:
-    95 % for all METRICS at once (Bonferroni), the rate at which a run that differs by round-off
-    alone has every metric inside"""
-    v = np.asarray(values, dtype=float)
-    n = len(v)
-    q = 1 - 0.025 / len(METRICS) if family else 0.975
-    return v.mean(), stats.t.ppf(q, n - 1) * v.std(ddof=1) * np.sqrt(1.0 / k + 1.0 / n)
-
-
 def bands_of(ens, k=1, family=False):
     """{metric: (mean, half-width, min, max, members)} of the runs ens {name: metrics}"""
     out = {}
     for key, _, _, _ in METRICS:
         vals = [m[key] for m in ens.values() if key in m]
         if len(vals) >= 3:
-            out[key] = band(vals, k, family) + (min(vals), max(vals), len(vals))
+            out[key] = band(vals, k, len(METRICS) if family else 1) + (min(vals), max(vals), len(vals))
     return out
 
 
@@ -254,10 +210,13 @@ def report(work):
     ens = {n: metrics(work, n) for n in members()}
     ens = {n: m for n, m in ens.items() if m}
     if len(ens) < 3:
-        sys.exit("the ensemble needs at least 3 complete runs in %s" % work)
+        if not SMOKE:
+            sys.exit("the ensemble needs at least 3 complete runs in %s" % work)
+        print("fewer than 3 complete runs in %s (the short setting): no tables" % work)
+        return
     bands = bands_of(ens)
     commit = head_commit()
-    lines = ["# Time to solution: bench/time_to_solution.py", "",
+    lines = ["# Time to solution: bench/time_to_solution/time_to_solution.py", "",
              "Tables written at commit %s from the runs in `%s` (examples/tidal_shear, %d cycles "
              "each; metrics averaged over cycles %s, n pooled over their creep windows)." % (
                  commit, work, CYCLES, "-".join(map(str, (KEEP[0], KEEP[-1])))), "",
@@ -294,9 +253,10 @@ def report(work):
             spec[0], "%.0f %s" % cost[:2] if cost else "", cells(m, bands), "yes" if inside else "no",
             "no" if outside(m, family) else "yes"))
     lines += roundoff_check(work, ens, bands) + replicated(work, ens)
-    plot(ens, bands, rows, work, os.path.join(HERE, "time_to_solution.png"))
+    out = out_dir(HERE)
+    plot(ens, bands, rows, work, os.path.join(out, "time_to_solution.png"))
     lines += ["", "![cost against each metric, the band shaded](time_to_solution.png)"]
-    open(os.path.join(HERE, "time_to_solution_results.md"), "w").write("\n".join(lines) + "\n")
+    open(os.path.join(out, "time_to_solution_results.md"), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
 
 
@@ -371,22 +331,6 @@ def plot(ens, bands, rows, work, path):
     axes.flat[0].legend(handles=handles, fontsize=7)
     fig.tight_layout()
     fig.savefig(path, dpi=80)
-
-
-def freeze_plugin(work, part):
-    """the runs of this process load a copy of the plugin taken now (work/plugin_PART): a
-    rebuild meanwhile does not touch them"""
-    frozen = os.path.join(work, "plugin_" + part)
-    os.makedirs(frozen, exist_ok=True)
-    for path in os.environ.get("LD_LIBRARY_PATH", "").split(":"):
-        if os.path.exists(os.path.join(path, "porewater.so")):
-            for so in ("porewater.so", "porewater_styles.so"):    # a new file: runs of an
-                shutil.copy(os.path.join(path, so), os.path.join(frozen, so + ".new"))  # earlier
-                os.replace(os.path.join(frozen, so + ".new"), os.path.join(frozen, so))  # call keep theirs
-            break
-    else:
-        sys.exit("no porewater.so on LD_LIBRARY_PATH: source scripts/env.sh first")
-    os.environ["LD_LIBRARY_PATH"] = frozen + ":" + os.environ["LD_LIBRARY_PATH"]
 
 
 def main():

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """examples/tidal_shear after a slip: does the plate ring, and what damps it?
 
-Part "ringdown" (bench/in.plate_ringdown, 0.3 s each): the plate on the frictionless bed (the
+Part "ringdown" (in.plate_ringdown, 0.3 s each): the plate on the frictionless bed (the
   example's default before; `original_bed`: on today's default bed) under a
   stress step 80 -> 100 kPa, no shear: the plate-bed mode's frequency f_p (FFT peak of the
   grain force on the plate) and damping ratio zeta (slope of the log Hilbert envelope over
@@ -19,11 +19,12 @@ Part "cycle" (examples/tidal_shear/in.tidal_shear, 3.0 s = 1.2 forcing cycles ea
   sums in another order).
 
 Usage (after scripts/setup.sh; source scripts/env.sh):
-    /usr/bin/python3 bench/wall_damping.py [--work DIR] [--part ringdown|cycle|all]
+    /usr/bin/python3 bench/wall_damping/wall_damping.py [--work DIR] [--part ringdown|cycle|all]
         [--old-gradient-plugin DIR]     # a plugin built with the v.grad(phi) of before
         [--analyse-only]
-Writes bench/wall_damping.png and bench/wall_damping_results.md. A run whose output is
-complete in --work is not repeated.
+Writes wall_damping.png and wall_damping_results.md beside this script. A run whose output
+is complete in --work is not repeated. The short setting (bench/smoke.py): two runs of each
+part, a few hundred steps each (none complete: no table rows).
 """
 import argparse
 import os
@@ -35,11 +36,15 @@ import matplotlib.pyplot as plt
 import numpy as np
 from scipy.signal import hilbert
 
-from example_runs import FRICTIONLESS, complete, head_commit, load, prepare, run_lmp, time_step
-
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from common import out_dir, short    # noqa: E402
+from common.runs import FRICTIONLESS, complete, head_commit, load, prepare, run_lmp, time_step    # noqa: E402
+
+OUT = out_dir(HERE)
 A, SIGMA0, T_CYCLE, DT = 70e3, 80e3, 2.5, time_step(1.16e7)
-CYCLE_STEPS = int(round(3.0 / DT))
+CYCLE_STEPS = int(round(short(3.0, 0.001) / DT))
+RINGDOWN_TIME = 0.3                 # s: in.plate_ringdown's run_time
 
 RINGDOWN = {  # name: (label, variables)
     "none": ("no dashpot", {"gamma_w": 0}),
@@ -65,6 +70,11 @@ CYCLE = {  # name: (label, variables, ranks, plugin)
 
 
 # ---------------------------------------------------------------- ringdown
+
+# the short setting: two runs of each part
+RINGDOWN = short(RINGDOWN, {k: RINGDOWN[k] for k in ("none", "absolute")})
+CYCLE = short(CYCLE, {k: CYCLE[k] for k in ("wet_absolute", "wet_absolute_np2")})
+
 
 def ringdown(path):
     c = load(path)
@@ -148,10 +158,11 @@ def main():
         for name, (label, variables) in RINGDOWN.items():
             d = os.path.join(args.work, "ringdown", name)
             out = os.path.join(d, "ringdown.txt")
-            if not args.analyse_only and not complete(out, 0.3):
-                prepare(d, ["in.plate_ringdown"])
-                run_lmp(d, "in.plate_ringdown", dict(FRICTIONLESS, **variables))
-            if complete(out, 0.3):
+            if not args.analyse_only and not complete(out, RINGDOWN_TIME):
+                prepare(d, [os.path.join(HERE, "in.plate_ringdown")])
+                run_lmp(d, "in.plate_ringdown", dict(FRICTIONLESS, **variables,
+                                                     run_time=short(RINGDOWN_TIME, 0.002)))
+            if complete(out, RINGDOWN_TIME):
                 rings[name] = (label, ringdown(out))
     if args.part in ("cycle", "all"):
         for name, (label, variables, ranks, plugin) in CYCLE.items():
@@ -171,17 +182,17 @@ def main():
 
 def report(rings, cycles):
     commit = head_commit()
-    lines = ["# The plate after a slip: ringing and wall damping (bench/wall_damping.py)", "",
-             "`/usr/bin/python3 bench/wall_damping.py --part all` (after scripts/setup.sh; "
+    lines = ["# The plate after a slip: ringing and wall damping (bench/wall_damping/wall_damping.py)", "",
+             "`/usr/bin/python3 bench/wall_damping/wall_damping.py --part all` (after scripts/setup.sh; "
              "source scripts/env.sh), written at commit %s on the 2-core development machine, "
              "shared with other jobs. Runs already complete in --work are reused: the "
              "first-cycle runs below were made with the example's inputs of this commit by "
              "the build before the styles moved onto src/core, whose time series this commit "
              "reproduces bit for bit (compared over the first 1.4 s of the default run, and "
-             "over the default's 2.25 cycles by bench/fidelity.py's run); the ringdown runs "
+             "over the default's 2.25 cycles by bench/paper_figures' run); the ringdown runs "
              "by this commit's build." % commit, ""]
     if rings:
-        lines += ["## Plate ringdown (bench/in.plate_ringdown: stress step 80 -> 100 kPa, 0.3 s)", "",
+        lines += ["## Plate ringdown (in.plate_ringdown: stress step 80 -> 100 kPa, 0.3 s)", "",
                   "| wall damping | f_p (Hz) | zeta |", "|---|---|---|"]
         for name, (label, r) in rings.items():
             lines.append("| %s | %.1f | %.4f |" % (label, r["f_p"], r["zeta"]))
@@ -213,7 +224,7 @@ def report(rings, cycles):
                 1e3 * m["slip_displacement"], 1e3 * m["dilation"], m["suction_min"], wins,
                 m["lift_off"], m["spectrum_peak"]))
         lines.append("")
-    open(os.path.join(HERE, "wall_damping_results.md"), "w").write("\n".join(lines) + "\n")
+    open(os.path.join(OUT, "wall_damping_results.md"), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
     plot(rings, cycles, metrics)
 
@@ -254,7 +265,7 @@ def plot(rings, cycles, metrics):
     for a in ax.flat:
         a.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(HERE, "wall_damping.png"), dpi=100)
+    fig.savefig(os.path.join(OUT, "wall_damping.png"), dpi=100)
 
 
 if __name__ == "__main__":
