@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The GPU kit: the 29Sep2021 host built for one NVIDIA GPU (KOKKOS CUDA + Serial, no MPI: the
 # lent machine has no Open MPI of ours) with the plugin, stripped and packed into gpu_kit/
-# (ignored by git) for bench/gpu_check.sh to run on a lent device machine.
+# (ignored by git) for bench/gpu/gpu_check.py to run on a lent device machine.
 #   scripts/gpu_kit.sh     ~40 min on 2 cores cold (the whole Kokkos-CUDA tree), then seconds
 # PW_CUDA_ARCH (default HOPPER90: sm_90, the H100 and H200, by scripts/patches/
 # kokkos-hopper90.patch) picks the Kokkos_ARCH_<...>. Kokkos 3.4 refuses at start to run code
@@ -62,8 +62,8 @@ for lib in $(LD_LIBRARY_PATH="$PREFIX/lib" ldd "$PREFIX/bin/lmp" | awk '$3 ~ "^/
   esac
 done
 cp "$PLUGIN_BUILD"/plugin/*.so "$KIT/lib/"
-# bench/gpu_check.py's Kokkos kernel timer (a profiling hook: no CUDA of its own)
-g++ -O2 -shared -fPIC -o "$KIT/lib/kokkos_dispatches.so" "$REPO/bench/kokkos_dispatches.cpp" -ldl
+# bench/gpu/gpu_check.py's Kokkos kernel timer (a profiling hook: no CUDA of its own)
+g++ -O2 -shared -fPIC -o "$KIT/lib/kokkos_dispatches.so" "$REPO/bench/common/kokkos_dispatches.cpp" -ldl
 strip --strip-unneeded "$KIT"/bin/lmp "$KIT"/lib/*.so*
 printf 'arch %s\nlammps %s\nplugin commit %s\nbuilt %s\n' "$ARCH" "$(basename "$LAMMPS_SRC")" \
   "$(git -C "$REPO" rev-parse --short HEAD)$(git -C "$REPO" diff --quiet || echo +changes)" \

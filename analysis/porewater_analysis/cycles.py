@@ -1,8 +1,8 @@
-"""The package's own estimators of a tidal cycle (bench/RESULTS_fidelity.md uses them): the slip
-of each cycle from the top layer's smoothed velocity, the creep exponent from the slope of its
-displacement over windows of phases 0.2-0.6, the coordination while creeping and at its
-minimum. Defaults are the reduced example's (examples/tidal_shear/in.params); pass a run's own
-period, tau and amp (timeseries.run_parameters) where they differ."""
+"""The package's own estimators of a tidal cycle (bench/fidelity and bench/paper_figures use
+them): the slip of each cycle from the top layer's smoothed velocity, the creep exponent from
+the slope of its displacement over windows of phases 0.2-0.6, the coordination while creeping
+and at its minimum. Defaults are the reduced example's (examples/tidal_shear/in.params); pass a
+run's own period, tau and amp (timeseries.run_parameters) where they differ."""
 import numpy as np
 from scipy import stats
 
@@ -117,7 +117,7 @@ def after_min_n(phase):
 
 
 def original_data_file_metrics(path):
-    """coordination of the original run's own data file (bench/original_run_contacts.txt:
+    """coordination of the original run's own data file (bench/common/original_run_contacts.txt:
     t, n_heavy, coordination; already the original's count): start, while creeping (phases
     0.2-0.6), the minimum and its phase, over cycles 2-9 (the first dropped, as here)"""
     t, _, z = np.loadtxt(path, unpack=True)

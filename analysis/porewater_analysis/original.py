@@ -5,7 +5,7 @@ of sphere at commit 116df3b (github.com/klkkong/sphere, python/ and src/).
 Our time series stands for the original's output files: `vx_top` for the fixed top grains'
 x-velocity, `z_wall` for the top wall's position w_x (the floor at z = 0), `N_applied` for
 the defined normal stress, and the tau of the run for the defined shear stress. The original
-data file of the paper's run (bench/original_run_contacts.txt) is read by
+data file of the paper's run (bench/common/original_run_contacts.txt) is read by
 cycles.original_data_file_metrics.
 """
 import numpy as np

@@ -10,7 +10,7 @@ and its scaling").
 H (top of the highest grain over the floor) and phi (1 - grain volume/(L_x L_y H)) of the
 reduced cases come from their consolidated states; Table S1's are the supplement's 0.47 m at
 phi 0.38. The groups of the plate mode use the bed's vertical stiffness under the plate,
-K_v = m_w (2 pi f_p)^2, with the plate-mode frequency f_p measured by bench/wall_damping.py
+K_v = m_w (2 pi f_p)^2, with the plate-mode frequency f_p measured by bench/wall_damping/wall_damping.py
 (its ringdown) on each reduced bed: 110 Hz on the frictionless one, 93.3 Hz on the default
 (the original's preparation, looser); as a constrained modulus M_s = K_v H/(L_x L_y) over
 k_n/d, 0.79 and 0.567. Table S1's bed, prepared as the original's, takes the default's

@@ -5,7 +5,7 @@
    neighbor list instead of two (no separate "touch" list), per-type coefficients, and the
    virial tallied from each pair's own force (the native style tallies a running sum).
    Few neighbors touch in a granular flow, so velocities are read, histories and forces
-   written only for closed contacts (bench/RESULTS.md).
+   written only for closed contacts (bench/pair/RESULTS.md).
 ------------------------------------------------------------------------- */
 
 #include "pair_linear_coulomb_kokkos.h"

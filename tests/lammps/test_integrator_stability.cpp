@@ -1,6 +1,6 @@
 // Energy of the grain integrators at the recommended eps = Δt·√(kn/m) = 0.07 on a frictionless
 // dense gas, and a clearly unstable eps stopped by pair linear/coulomb's overlap_limit instead
-// of a silent NaN run (the stability map is in bench/RESULTS_integrators.md).
+// of a silent NaN run (the stability map is in bench/integrators/RESULTS.md).
 #include "granular_inputs.h"
 #include "lammps_fixture.h"
 
@@ -59,14 +59,14 @@ EnergyChange energy_change(const std::string &integrator, double eps, int steps)
 TEST(IntegratorStability, EnergyStaysBoundedAtTheRecommendedEpsilon)
 {
   // Bounds from a two-grain contact, ω = √(2kn/m), so h = ωΔt = √2 eps, and the linear
-  // analysis of one step (linear_amplification in bench/integrator_bench.py); most contacts of
+  // analysis of one step (linear_amplification in bench/integrators/integrator_bench.py); most contacts of
   // this gas are binary (clusters of contacts vibrate faster and would grow faster):
   // - velocity Verlet is symplectic: no growth, an energy error fluctuating at O(h²), plus
   //   O(h²) when a contact opens or closes between steps; bound eps² = 4.9e-3 (measured 4.3e-4);
   // - sphere's Taylor step amplifies a contact's amplitude by 1 + h⁴/6 per step (two-step
   //   Adams–Bashforth velocities), so the energy rises, at most by 2h⁴/6 = (4/3)eps⁴ per step
   //   if all of it sat in contacts all the time, plus eps²: 0.101 in 3000 steps (measured
-  //   +4.0 %, always rising; 1e5 steps blow up, bench/RESULTS_integrators.md);
+  //   +4.0 %, always rising; 1e5 steps blow up, bench/integrators/RESULTS.md);
   // - the corrector damps by 1 − h⁴/24 per step: it loses at most (1/3)eps⁴ per step, 2.4 %
   //   in 3000 steps, plus eps² (measured −0.9 %), and gains no more than eps².
   // A run that blows up leaves these bounds by orders of magnitude.
@@ -90,7 +90,7 @@ TEST(IntegratorStability, EnergyStaysBoundedAtTheRecommendedEpsilon)
 namespace {
 
 // Each integrator above its limit on this gas in the stability map of
-// bench/RESULTS_integrators.md (Verlet 0.2, sphere's Taylor step 0.05; the corrector, which
+// bench/integrators/RESULTS.md (Verlet 0.2, sphere's Taylor step 0.05; the corrector, which
 // dissipates, holds at 1.0 and breaks abruptly by 1.4), yet small enough that the first
 // steps are sound: the instability grows over several steps, and pair linear/coulomb's
 // overlap_limit must stop the run naming the step and grains, not let it run on with NaN.

@@ -1,0 +1,136 @@
+// A Kokkos profiling hook (KOKKOS_PROFILE_LIBRARY=this.so): counts the parallel dispatches
+// and deep copies of a run, per kernel name, into $KCOUNT_OUT (bench/common/runs.py:
+// dispatches_per_step); with $KTIMES_OUT set it also times each kernel and deep copy
+// (bench/gpu/gpu_check.py). To time a kernel alone it waits for the device before and after
+// it (cuCtxSynchronize from the driver already loaded, when there is one): the run is
+// slower, its shares are the kernels'.
+//   g++ -O2 -shared -fPIC -o kokkos_dispatches.so kokkos_dispatches.cpp -ldl
+#include <dlfcn.h>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace {
+struct Tally {
+  long calls = 0;
+  double seconds = 0.0;
+};
+std::map<std::string, long> counts;
+std::map<std::string, Tally> times;    // "for NAME", "reduce NAME", "scan NAME", "deep_copy DST <- SRC"
+long nfor = 0, nreduce = 0, nscan = 0, ncopy = 0, nfence = 0;
+bool timing = false;
+int (*device_sync)() = nullptr;    // CUresult cuCtxSynchronize(void), none on host backends
+struct Open {
+  std::string key;
+  std::chrono::steady_clock::time_point start;
+};
+std::vector<Open> open_regions;    // kernels do not nest; deep copies may sit inside fences
+
+// The driver is loaded when Kokkos starts CUDA, after this library's init: looked for at
+// the first regions (a host backend never loads it)
+void find_device_sync()
+{
+  static int tries = 0;
+  if (device_sync || ++tries > 1000) return;
+  if (void *cuda = dlopen("libcuda.so.1", RTLD_NOW | RTLD_NOLOAD))
+    device_sync = reinterpret_cast<int (*)()>(dlsym(cuda, "cuCtxSynchronize"));
+}
+
+// a kernel that fails on the device is named here, before the next call reports it blind
+void wait_for_device(const char *where, const std::string &key)
+{
+  find_device_sync();
+  if (!device_sync) return;
+  if (const int status = device_sync()) {
+    fprintf(stderr, "kokkos_dispatches: the device failed (CUDA driver error %d) %s %s\n", status,
+            where, key.c_str());
+    fflush(stderr);
+    abort();
+  }
+}
+// a counted region (kind: for, reduce, scan, deep_copy) begins: timed only with KTIMES_OUT
+uint64_t begin(const char *kind, const char *name)
+{
+  if (!timing) return 0;
+  const std::string key = std::string(kind) + " " + name;
+  wait_for_device("before", key);
+  open_regions.push_back({key, std::chrono::steady_clock::now()});
+  return open_regions.size() - 1;
+}
+void end(uint64_t id)
+{
+  if (!timing || id >= open_regions.size()) return;
+  wait_for_device("in", open_regions[id].key);
+  const auto stop = std::chrono::steady_clock::now();
+  Tally &t = times[open_regions[id].key];
+  ++t.calls;
+  t.seconds += std::chrono::duration<double>(stop - open_regions[id].start).count();
+  open_regions.resize(id);
+}
+}    // namespace
+
+extern "C" void kokkosp_init_library(int, uint64_t, uint32_t, void *)
+{
+  timing = getenv("KTIMES_OUT") != nullptr;
+}
+extern "C" void kokkosp_finalize_library()
+{
+  FILE *f = fopen(getenv("KCOUNT_OUT") ? getenv("KCOUNT_OUT") : "kcount.txt", "w");
+  fprintf(f, "for %ld reduce %ld scan %ld deep_copy %ld fence %ld\n", nfor, nreduce, nscan, ncopy, nfence);
+  for (auto &kv : counts) fprintf(f, "%ld %s\n", kv.second, kv.first.c_str());
+  fclose(f);
+  if (!timing) return;
+  FILE *t = fopen(getenv("KTIMES_OUT"), "w");
+  fprintf(t, "# seconds calls kind name (waited for the device: %s)\n", device_sync ? "yes" : "no");
+  for (auto &kv : times) fprintf(t, "%.6f %ld %s\n", kv.second.seconds, kv.second.calls, kv.first.c_str());
+  fclose(t);
+}
+extern "C" void kokkosp_begin_parallel_for(const char *n, uint32_t, uint64_t *k)
+{
+  ++nfor;
+  ++counts[n];
+  *k = begin("for", n);
+}
+extern "C" void kokkosp_end_parallel_for(uint64_t k) { end(k); }
+extern "C" void kokkosp_begin_parallel_reduce(const char *n, uint32_t, uint64_t *k)
+{
+  ++nreduce;
+  ++counts[n];
+  *k = begin("reduce", n);
+}
+extern "C" void kokkosp_end_parallel_reduce(uint64_t k) { end(k); }
+extern "C" void kokkosp_begin_parallel_scan(const char *n, uint32_t, uint64_t *k)
+{
+  ++nscan;
+  ++counts[n];
+  *k = begin("scan", n);
+}
+extern "C" void kokkosp_end_parallel_scan(uint64_t k) { end(k); }
+extern "C" void kokkosp_begin_fence(const char *, uint32_t, uint64_t *k)
+{
+  ++nfence;
+  *k = 0;
+}
+extern "C" void kokkosp_end_fence(uint64_t) {}
+namespace {
+uint64_t copy_region = UINT64_MAX;
+}
+// Kokkos_Profiling_SpaceHandle: the memory space's name, passed by value
+struct SpaceHandle {
+  char name[64];
+};
+extern "C" void kokkosp_begin_deep_copy(SpaceHandle, const char *dst, const void *, SpaceHandle,
+                                        const char *src, const void *, uint64_t)
+{
+  ++ncopy;
+  copy_region = timing ? begin("deep_copy", (std::string(dst) + " <- " + src).c_str()) : UINT64_MAX;
+}
+extern "C" void kokkosp_end_deep_copy()
+{
+  if (copy_region != UINT64_MAX) end(copy_region);
+  copy_region = UINT64_MAX;
+}
