@@ -74,6 +74,8 @@ def entries(plugin):
          ["--work", "{work}", "--only", "stiff,default"],
          ["{work}/stiff/member1/timeseries.txt", "{work}/stiff_eps0.07/member0/cost_legs.txt",
           "{work}/default/member1/timeseries.txt"], None),
+        ("fidelity: the paper's scene's tables", "fidelity/paper_scene.py",
+         ["--work", "{work}", "--report"], ["{pages}/fidelity/paper_scene_results.md"], None),
         ("paper_figures: cycle, permeability, creep", "paper_figures/figures.py",
          ["--work", "{work}", "--part", "all"],
          ["{work}/cycle/twin/timeseries.txt", "{work}/slow/timeseries.txt",

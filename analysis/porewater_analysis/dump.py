@@ -15,3 +15,11 @@ def read_dump(path):
     data = np.loadtxt(lines[header + 1:], ndmin=2)
     data = data[np.argsort(data[:, names.index("id")], kind="stable")]
     return box[:, 1] - box[:, 0], {n: data[:, k] for k, n in enumerate(names)}
+
+
+def box_bounds(path):
+    """the (lo, hi) of the box along x, y, z of a custom dump's snapshot"""
+    with open(path) as f:
+        lines = f.readlines()
+    bounds = next(i for i, l in enumerate(lines) if l.startswith("ITEM: BOX BOUNDS"))
+    return np.array([[float(v) for v in lines[bounds + k].split()[:2]] for k in (1, 2, 3)])

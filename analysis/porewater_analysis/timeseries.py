@@ -1,4 +1,5 @@
 """A run folder of examples/tidal_shear: its time series and the parameters it started with."""
+import lzma
 import os
 
 import numpy as np
@@ -7,10 +8,13 @@ import numpy as np
 def load(path):
     """{column: array} of a time series: the first line `# name name ...`, rows of numbers;
     later lines starting with '#' (a continued run's `# continued from checkpoint.restart`)
-    are comments, which np.loadtxt skips"""
-    with open(path) as f:
+    are comments, which np.loadtxt skips. Where `path` is missing, `path`.xz (a time series
+    kept compressed, as the repository keeps Table S1's)"""
+    if not os.path.exists(path) and os.path.exists(path + ".xz"):
+        path += ".xz"
+    with (lzma.open(path, "rt") if path.endswith(".xz") else open(path)) as f:
         names = f.readline().lstrip("# ").split()
-    data = np.loadtxt(path, ndmin=2)
+        data = np.loadtxt(f, ndmin=2)
     return {n: data[:, k] for k, n in enumerate(names)}
 
 

@@ -16,7 +16,7 @@ from scipy import stats
 from . import EXAMPLE, short
 from .runs import complete, prepare, timed_run
 from porewater_analysis.cycles import after_min_n
-from porewater_analysis.report import analyse_run
+from porewater_analysis.report import analyse_run, parameters
 
 CYCLES, PERIOD = 4, 2.5                 # in.params (reduced case): f = 0.4 Hz
 RUN_CYCLES = short(CYCLES, 0.002)       # what a run runs; a shorter one is never complete
@@ -113,13 +113,14 @@ def mean_over_kept(rows, key):
     return float(np.mean(values)) if len(values) == len(rows) else None
 
 
-def run_metrics(work, name):
-    """{metric: value over cycles KEEP} of a complete run by both estimators, or None"""
+def run_metrics(work, name, cycles=CYCLES, keep=KEEP):
+    """{metric: value over the cycles `keep`} of a run complete to `cycles` cycles of its own
+    period, by both estimators (n: pooled over them), or None"""
     d = os.path.join(work, name)
-    if not complete(os.path.join(d, "timeseries.txt"), CYCLES * PERIOD):
+    if not complete(os.path.join(d, "timeseries.txt"), cycles * parameters(d)[0]["period"]):
         return None
-    result = analyse_run(d, cycles=CYCLES)
-    kept = [c for c in result["cycles"] if c["cycle"] in KEEP]
+    result = analyse_run(d, cycles=cycles)
+    kept = [c for c in result["cycles"] if c["cycle"] in keep]
     ours = [dict(c["ours"]) for c in kept]
     original = [dict(c["original"]) for c in kept]
     for row in ours + original:    # a collapse in the landing just past the cycle's end
@@ -129,9 +130,17 @@ def run_metrics(work, name):
                 for key, _, _, _ in ORIGINAL if key.endswith("_original") and key != "n_original"})
     out.update({key: mean_over_kept(original, key) for key in ("stick_fraction", "exit_onset",
                                                                 "exit_end")})
-    pooled = result["pooled"]
-    out["n"] = pooled["ours"]["n"] if pooled["ours"] else None
-    out["n_original"] = None if np.isnan(pooled["original"]["n"]) else pooled["original"]["n"]
+    if len(keep) == 1:                  # n of that cycle's fits
+        ours_n, original_n = ours[0].get("n"), original[0]["n"]
+    elif tuple(keep) == tuple(range(2, cycles + 1)):    # n pooled, as the reports pool it
+        pooled = result["pooled"]
+        ours_n = pooled["ours"]["n"] if pooled["ours"] else None
+        original_n = pooled["original"]["n"]
+    else:
+        raise ValueError("n is fitted per cycle or pooled over cycles 2-%d, not over %s"
+                         % (cycles, keep))
+    out["n"] = ours_n
+    out["n_original"] = None if np.isnan(original_n) else original_n
     return {k: v for k, v in out.items() if v is not None}
 
 

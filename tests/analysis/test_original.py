@@ -194,6 +194,21 @@ class RunFolder(unittest.TestCase):
             self.assertEqual(len(notes), 1)
             self.assertIn("mu_f", notes[0])
 
+    def test_load_reads_a_series_kept_compressed(self):
+        """timeseries.txt.xz where timeseries.txt is missing: the same columns, comments
+        skipped"""
+        import lzma
+        series, _ = synthetic()
+        with tempfile.TemporaryDirectory() as d:
+            write_run(d, series, PARAMS)
+            path = os.path.join(d, "timeseries.txt")
+            with open(path, "rb") as f, lzma.open(path + ".xz", "wb") as out:
+                out.write(f.read())
+            os.remove(path)
+            back = load(path)
+            for name in series:
+                np.testing.assert_array_equal(back[name], series[name])
+
     def test_cli_writes_the_table_and_the_figure(self):
         series, _ = synthetic()
         with tempfile.TemporaryDirectory() as d:
