@@ -161,15 +161,15 @@ def ensemble_table(label, ens):
     return ["### " + label, ""] + lines
 
 
-def layout_comparison(one, two):
-    """per metric: means, the difference 2 - 1 ranks with its 95 % interval (Welch) and its
-    family-wise verdict"""
+def layout_comparison(one, two, labels=("1 rank", "2 ranks", "2 - 1")):
+    """per metric: means, the difference two - one (2 - 1 ranks) with its 95 % interval
+    (Welch) and its family-wise verdict; `labels` name one, two and the difference"""
     compared = [k for k, _, _, _ in METRICS if len(summary(one, k)) >= 3 and len(summary(two, k)) >= 3]
     if not compared:
-        return ["Not compared: fewer than 3 complete runs on a layout."]
+        return ["Not compared: fewer than 3 complete runs on a side (%s, %s)." % labels[:2]]
     family = 1 - 0.05 / (2 * len(compared))
-    lines = ["| metric | 1 rank mean (sd) | 2 ranks mean (sd) | 2 - 1 | 95 % interval | p (Welch) "
-             "| outside, family-wise |", "|---|---|---|---|---|---|---|"]
+    lines = ["| metric | %s mean (sd) | %s mean (sd) | %s | 95 %% interval | p (Welch) "
+             "| outside, family-wise |" % labels, "|---|---|---|---|---|---|---|"]
     shifted = []
     for key, name, scale, f in METRICS:
         if key not in compared:
