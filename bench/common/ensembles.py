@@ -159,6 +159,40 @@ def mean_band(ens, key):
     return f % (scale * v.mean()) + (" ± " + f % (scale * band(v)[1]) if len(v) >= 3 else "")
 
 
+def compare_ensembles(one, two, labels=("1 rank", "2 ranks", "2 - 1")):
+    """lines: per metric of two ensembles {name: metrics}, the means, the difference two - one
+    (by default 2 - 1 ranks) with its 95 % interval (Welch) and whether it is outside it
+    family-wise (Bonferroni over the metrics compared); `labels` name one, two and the
+    difference"""
+    compared = [k for k, _, _, _ in METRICS if len(summary(one, k)) >= 3 and len(summary(two, k)) >= 3]
+    if not compared:
+        return ["Not compared: fewer than 3 complete runs on a side (%s, %s)." % labels[:2]]
+    family = 1 - 0.05 / (2 * len(compared))
+    lines = ["| metric | %s mean (sd) | %s mean (sd) | %s | 95 %% interval | p (Welch) "
+             "| outside, family-wise |" % labels, "|---|---|---|---|---|---|---|"]
+    shifted = []
+    for key, name, scale, f in METRICS:
+        if key not in compared:
+            continue
+        a, b = summary(one, key), summary(two, key)
+        va, vb = a.var(ddof=1) / len(a), b.var(ddof=1) / len(b)
+        se = np.sqrt(va + vb)
+        dof = (va + vb) ** 2 / (va ** 2 / (len(a) - 1) + vb ** 2 / (len(b) - 1)) if se > 0 else 1
+        diff = b.mean() - a.mean()
+        half, half_family = stats.t.ppf(0.975, dof) * se, stats.t.ppf(family, dof) * se
+        p = stats.ttest_ind(b, a, equal_var=False).pvalue if se > 0 else 1.0
+        outside = abs(diff) > half_family
+        shifted += [name] if outside else []
+        lines.append("| %s | %s (%s) | %s (%s) | %s | ± %s | %.3f | %s |" % (
+            name, f % (scale * a.mean()), f % (scale * a.std(ddof=1)), f % (scale * b.mean()),
+            f % (scale * b.std(ddof=1)), f % (scale * diff), f % (scale * half), p,
+            "**yes**" if outside else "no"))
+    lines += ["", "Metrics compared: %d; family-wise: t(1 - 0.025/%d) (Bonferroni). Shifted "
+              "beyond it: %s." % (len(compared), len(compared), ", ".join(shifted) or "none")]
+    return lines
+
+
+
 # Two runs' time series against the chaotic spread (bench/hosts, bench/gpu): the columns
 # compared (timeseries.txt of in.tidal_shear), and what they are
 QUANTITIES = [

@@ -29,13 +29,13 @@ import sys
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
-from scipy import stats
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 from common import out_dir    # noqa: E402
-from common.ensembles import (AGAINST_PAPER, CYCLES, KEEP, METRICS, band, mean_band,    # noqa: E402
-                              members, np2_members, run_metrics, run_one, summary)
+from common.ensembles import (AGAINST_PAPER, CYCLES, KEEP, METRICS, band,    # noqa: E402
+                              compare_ensembles, mean_band, members, np2_members, run_metrics,
+                              run_one, summary)
 from common.runs import freeze_plugin, head_commit, read_cost    # noqa: E402
 
 # the cases beside the default: in.tidal_shear -var overrides
@@ -115,37 +115,6 @@ def ensemble_table(label, ens):
     return ["### " + label, ""] + lines
 
 
-def layout_comparison(one, two):
-    """per metric: means, the difference 2 - 1 ranks with its 95 % interval (Welch) and its
-    family-wise verdict"""
-    compared = [k for k, _, _, _ in METRICS if len(summary(one, k)) >= 3 and len(summary(two, k)) >= 3]
-    if not compared:
-        return ["Not compared: fewer than 3 complete runs on a layout."]
-    family = 1 - 0.05 / (2 * len(compared))
-    lines = ["| metric | 1 rank mean (sd) | 2 ranks mean (sd) | 2 - 1 | 95 % interval | p (Welch) "
-             "| outside, family-wise |", "|---|---|---|---|---|---|---|"]
-    shifted = []
-    for key, name, scale, f in METRICS:
-        if key not in compared:
-            continue
-        a, b = summary(one, key), summary(two, key)
-        va, vb = a.var(ddof=1) / len(a), b.var(ddof=1) / len(b)
-        se = np.sqrt(va + vb)
-        dof = (va + vb) ** 2 / (va ** 2 / (len(a) - 1) + vb ** 2 / (len(b) - 1)) if se > 0 else 1
-        diff = b.mean() - a.mean()
-        half, half_family = stats.t.ppf(0.975, dof) * se, stats.t.ppf(family, dof) * se
-        p = stats.ttest_ind(b, a, equal_var=False).pvalue if se > 0 else 1.0
-        outside = abs(diff) > half_family
-        shifted += [name] if outside else []
-        lines.append("| %s | %s (%s) | %s (%s) | %s | ± %s | %.3f | %s |" % (
-            name, f % (scale * a.mean()), f % (scale * a.std(ddof=1)), f % (scale * b.mean()),
-            f % (scale * b.std(ddof=1)), f % (scale * diff), f % (scale * half), p,
-            "**yes**" if outside else "no"))
-    lines += ["", "Metrics compared: %d; family-wise: t(1 - 0.025/%d) (Bonferroni). Shifted "
-              "beyond it: %s." % (len(compared), len(compared), ", ".join(shifted) or "none")]
-    return lines
-
-
 def against_paper(one):
     """mean ± the 95 % prediction band of the 1-rank ensemble, by each estimator"""
     lines = ["| | paper / the original's data file | ours, our estimator | ours, the original's "
@@ -206,7 +175,7 @@ def report(work):
     lines += against_paper(one)
     lines += [""] + ensemble_table("1 rank: %d members" % len(one), one) + [""]
     lines += ensemble_table("2 ranks: %d members" % len(two), two) + [""]
-    lines += ["## 2 ranks against 1 rank", ""] + layout_comparison(one, two)
+    lines += ["## 2 ranks against 1 rank", ""] + compare_ensembles(one, two)
     lines += ["", "## The cases, by both estimators", ""] + cases_table(work, one)
     out = out_dir(HERE)
     plot(one, two, os.path.join(out, "ensemble.png"))

@@ -233,10 +233,11 @@ void FixDarcyPressure::write_restart(FILE *fp)
 
 void FixDarcyPressure::restart(char *buf)
 {
+  int version = 0;
   const std::vector<double> state =
-      porewater::read_restart_state(lmp, porewater::DarcyFluid::RESTART, buf, -1);
+      porewater::read_restart_state(lmp, porewater::DarcyFluid::RESTART, buf, -1, &version);
   porewater::or_stop(lmp, [&] {
-    fluid->restore(state);
+    fluid->restore(state, version);
     return 0;
   });
 }

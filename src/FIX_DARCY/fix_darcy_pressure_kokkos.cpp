@@ -3,7 +3,7 @@
 
    Per fluid step the grid crosses between device and host twice: the deposits (40 values
    per stencil block, 5 per cell) up for the MPI sum and the solve, the force field (32 per
-   block, 3 per cell) back down. At the grids this model uses (~1e2-1e4 cells) that is a
+   block, 4 per cell) back down. At the grids this model uses (~1e2-1e4 cells) that is a
    few hundred kB at most.
 ------------------------------------------------------------------------- */
 
@@ -117,7 +117,8 @@ class FixDarcyPressureKokkos<DeviceType>::Grains final : public porewater::Grain
       fix(fix), atomKK((AtomKokkos *) fix->atom),
       d_sums("darcy/pressure:deposits", grid.sums_size()),
       d_table("darcy/pressure:gradient table", grid.gradient_table_size()),
-      d_cell_gradient("darcy/pressure:cell gradient", 3 * grid.cells.ncells)
+      d_cell_gradient("darcy/pressure:cell gradient", 3 * grid.cells.ncells),
+      d_cell_porosity("darcy/pressure:cell porosity", grid.cells.ncells)
   {
   }
 
@@ -144,10 +145,12 @@ class FixDarcyPressureKokkos<DeviceType>::Grains final : public porewater::Grain
     if (field_changed) {
       copy_to_device(d_table, field.gradient_table);
       copy_to_device(d_cell_gradient, field.cell_gradient);
+      copy_to_device(d_cell_porosity, field.cell_porosity);
     }
     const porewater::FluidForceField device_field{
-        d_table.data(), d_cell_gradient.data(), {field.rho_g[0], field.rho_g[1], field.rho_g[2]},
-        field.horizontal_only_bit};
+        d_table.data(), d_cell_gradient.data(), d_cell_porosity.data(),
+        {field.rho_g[0], field.rho_g[1], field.rho_g[2]}, field.horizontal_only_bit,
+        field.seepage};
     const int nlocal = fix->atom->nlocal;
     atomKK->sync(execution(), X_MASK | F_MASK | RADIUS_MASK | MASK_MASK);
     fix->k_fluid_force.template sync<DeviceType>();
@@ -190,7 +193,7 @@ class FixDarcyPressureKokkos<DeviceType>::Grains final : public porewater::Grain
 
   FixDarcyPressureKokkos *fix;
   AtomKokkos *atomKK;
-  grid_view d_sums, d_table, d_cell_gradient;
+  grid_view d_sums, d_table, d_cell_gradient, d_cell_porosity;
   Stencils<DeviceType> stencils;
 };
 

@@ -48,11 +48,13 @@ inline void write_restart_state(LAMMPS_NS::LAMMPS *lmp, FILE *fp, const RestartF
   if (lmp->comm->me == 0) write_restart_block(fp, format, values);
 }
 
-// Fix::restart: the values of the block, or a stop saying how it differs from this command's
+// Fix::restart: the values of the block (and its format version), or a stop saying how it
+// differs from this command's
 inline std::vector<double> read_restart_state(LAMMPS_NS::LAMMPS *lmp, const RestartFormat &format,
-                                              const char *buf, long expected_count)
+                                              const char *buf, long expected_count,
+                                              int *version = nullptr)
 {
-  return or_stop(lmp, [&] { return restart_values(format, buf, expected_count); });
+  return or_stop(lmp, [&] { return restart_values(format, buf, expected_count, version); });
 }
 
 // LAMMPS' equal-style variables, for EqualValue

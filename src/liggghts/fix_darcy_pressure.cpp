@@ -225,9 +225,11 @@ void FixDarcyPressure::write_restart(FILE *fp)
 // called on every rank before init(), when the restart file has a fix of this ID and style
 void FixDarcyPressure::restart(char *buf)
 {
-  const std::vector<double> state = read_restart_state(lmp, porewater::DarcyFluid::RESTART, buf, -1);
+  int version = 0;
+  const std::vector<double> state =
+      read_restart_state(lmp, porewater::DarcyFluid::RESTART, buf, -1, &version);
   or_stop(lmp, [&] {
-    fluid_->restore(state);
+    fluid_->restore(state, version);
     return 0;
   });
 }

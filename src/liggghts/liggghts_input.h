@@ -42,12 +42,14 @@ inline void write_restart_state(LAMMPS_NS::LAMMPS *lmp, FILE *fp,
   if (lmp->comm->me == 0) porewater::write_restart_block(fp, format, values);
 }
 
-// Fix::restart (every rank gets the block): its values, or a stop saying how it differs
+// Fix::restart (every rank gets the block): its values (and its format version), or a stop
+// saying how it differs
 inline std::vector<double> read_restart_state(LAMMPS_NS::LAMMPS *lmp,
                                               const porewater::RestartFormat &format,
-                                              const char *buf, long expected_count)
+                                              const char *buf, long expected_count,
+                                              int *version = nullptr)
 {
-  return or_stop(lmp, [&] { return porewater::restart_values(format, buf, expected_count); });
+  return or_stop(lmp, [&] { return porewater::restart_values(format, buf, expected_count, version); });
 }
 
 // LIGGGHTS' equal-style variables, for porewater::EqualValue

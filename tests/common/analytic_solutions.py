@@ -31,3 +31,49 @@ def undrained_pressure_change(phi0, phi1, compressibility):
     the integral of beta phi dp = -dphi/(1 - phi), -(1/beta) ln[phi1 (1 - phi0) / (phi0 (1 - phi1))];
     for a small change, -(phi1 - phi0)/(beta phi (1 - phi)) with phi at the midpoint."""
     return -math.log(phi1 * (1.0 - phi0) / (phi0 * (1.0 - phi1))) / compressibility
+
+
+def consolidation(load, m_v, porosity, compressibility, permeability, viscosity, height,
+                  solid_share):
+    """One-dimensional consolidation of a linear skeleton in the pore water of fix
+    darcy/pressure (doc/model.md, "Consolidation"): a load step `load` on the skeleton,
+    constrained compressibility m_v, fluid compressibility beta, Darcy permeability k and
+    viscosity mu over a layer of `height` H drained at its top and closed at its bottom, the
+    grains taking `solid_share` alpha of the water's force per bulk volume -grad p (seepage
+    pressure: 1 - phi; seepage full: 1). The fluid's storage is S = phi beta + alpha m_v:
+    the undrained pressure is load m_v/S, the diffusivity c = k/(mu S), and the slowest
+    mode decays at pi^2 c/(4 H^2). Returns a dict of them (and the inputs the series need)."""
+    storage = porosity * compressibility + solid_share * m_v
+    diffusivity = permeability / (viscosity * storage)
+    return {"undrained_pressure": load * m_v / storage, "diffusivity": diffusivity,
+            "storage": storage, "slowest_rate": math.pi ** 2 * diffusivity / (4.0 * height ** 2),
+            "m_v": m_v, "solid_share": solid_share, "load": load, "height": height}
+
+
+def consolidation_modes(c, t, terms=200):
+    """The mode sums of a unit load step at time t >= 0 of consolidation(): the base
+    pressure p(0, t)/p_u = sum 2 (-1)^m/M e^(-M^2 T) and the pressure integral
+    int p dz/(p_u H) = sum 2/M^2 e^(-M^2 T), M = (2m + 1) pi/2, T = c t/H^2."""
+    T = c["diffusivity"] * t / c["height"] ** 2
+    base = mean = 0.0
+    for m in range(terms):
+        M = (2 * m + 1) * math.pi / 2
+        decay = math.exp(-M * M * T)
+        base += 2.0 * (-1) ** m / M * decay
+        mean += 2.0 / (M * M) * decay
+    return base, mean
+
+
+def consolidation_step(c, t):
+    """(base pressure, settlement) at time t of a load step at t = 0 of consolidation(); the
+    settlement of the layer's top, m_v H (load - alpha p averaged over the layer); both 0
+    before the step"""
+    if t < 0.0:
+        return 0.0, 0.0
+    if t == 0.0:
+        base, mean = 1.0, 1.0    # the series' limits (they converge slowly at T = 0)
+    else:
+        base, mean = consolidation_modes(c, t)
+    p_u = c["undrained_pressure"]
+    settlement = c["m_v"] * c["height"] * (c["load"] - c["solid_share"] * p_u * mean)
+    return p_u * base, settlement

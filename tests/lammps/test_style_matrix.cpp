@@ -63,7 +63,8 @@ StyleCase pair_linear_coulomb()
   return c;
 }
 
-StyleCase fix_darcy_pressure()
+// `options`: more keywords of the fix in every scene
+StyleCase fix_darcy_pressure(const std::string &options = "")
 {
   StyleCase c = named("FixDarcyPressure", "darcy/pressure", "fl", 0.01);
   c.observables = {
@@ -82,13 +83,13 @@ StyleCase fix_darcy_pressure()
       per_atom("f_fl", 1e-12, NOT_COMPARED).relative_to_largest().above(0.0),
   };
   // the bed lifted by twice the critical gradient
-  const std::string fluid = bed_fluid(lifting_pressure, 2) +
+  const std::string fluid = bed_fluid(lifting_pressure, 2) + options +
       "\nfix move mobile nve/sphere\n";
   c.kokkos = {bed(), fluid, 400};
   c.mpi = {bed("processors * * 1"), fluid, 400};    // x-y: the bed is thin in z
   // every 3: the split at step 200 falls between fluid steps (198, 201). The restart holds
   // p, phi and the fluid clock: `initial 123` must be ignored
-  const std::string every3 = bed_fluid(lifting_pressure, 3);
+  const std::string every3 = bed_fluid(lifting_pressure, 3) + options;
   c.restart = {{bed(), every3 + "\nfix move mobile nve/sphere\n", 200},
                "",
                "comm_modify vel yes\nneighbor 0.002 bin\nneigh_modify delay 0 every 1 check yes\n"
@@ -126,26 +127,16 @@ StyleCase fix_darcy_pressure()
   return c;
 }
 
-// `solver relaxed`, the original program's iteration, in the same scenes: /kk, MPI and the
-// restart split as the converged solver (the sweeps are one more deterministic function of
-// the same deposits), and its own bad input
-StyleCase fix_darcy_pressure_relaxed()
+// fix darcy/pressure with more keywords (`options`) in the same scenes: /kk, MPI and the
+// restart split as the default, and the options' own bad inputs (`bad`, after the command)
+StyleCase fix_darcy_pressure_with(const std::string &name, const std::string &options,
+                                  const std::vector<std::pair<std::string, std::string>> &bad)
 {
-  StyleCase c = fix_darcy_pressure();
-  c.name = "FixDarcyPressureRelaxed";
-  const std::string relaxed = " solver relaxed 0.05 1e-3";
-  const std::string fluid = bed_fluid(lifting_pressure, 2) + relaxed + "\nfix move mobile nve/sphere\n";
-  c.kokkos.commands = fluid;
-  c.mpi.commands = fluid;
-  const std::string every3 = bed_fluid(lifting_pressure, 3) + relaxed;
-  c.restart.scene.commands = every3 + "\nfix move mobile nve/sphere\n";
-  c.restart.commands = every3 + " initial 123\nfix move mobile nve/sphere\n";
-  const std::string fix = "fix bad all darcy/pressure grid 2 2 4", unit = unit_diffusivity;
-  c.bad_inputs = {
-      {fix + unit + " solver exact", "solver expects converged or relaxed, got 'exact'"},
-      {fix + unit + " solver relaxed 0 1e-3", "solver expects a number in (0, 1], got '0'"},
-      {fix + unit + " solver relaxed 0.05", "solver expects a number > 0, but the command ends there"},
-  };
+  StyleCase c = fix_darcy_pressure(options);
+  c.name = name;
+  c.bad_inputs.clear();
+  for (const auto &b : bad)
+    c.bad_inputs.push_back({"fix bad all darcy/pressure grid 2 2 4" + unit_diffusivity + b.first, b.second});
   return c;
 }
 
@@ -328,7 +319,20 @@ std::vector<StyleCase> cases()
       {fix + "plate_damping -2", "plate_damping expects a finite number >= 0, got '-2'"},
       {fix + "plate_damping soft", "plate_damping expects a finite number >= 0, got 'soft'"},
   };
-  return {pair_linear_coulomb(), fix_darcy_pressure(), fix_darcy_pressure_relaxed(),
+  // `solver relaxed`, the original program's iteration (the sweeps are one more
+  // deterministic function of the same deposits)
+  StyleCase relaxed = fix_darcy_pressure_with(
+      "FixDarcyPressureRelaxed", " solver relaxed 0.05 1e-3",
+      {{" solver exact", "solver expects converged or relaxed, got 'exact'"},
+       {" solver relaxed 0 1e-3", "solver expects a number in (0, 1], got '0'"},
+       {" solver relaxed 0.05", "solver expects a number > 0, but the command ends there"}});
+  // `seepage full`, the grains taking the water's whole force -V grad p/(1 - phi) (the factor
+  // is one more function of the same stencil and cell porosities)
+  StyleCase seepage = fix_darcy_pressure_with(
+      "FixDarcyPressureSeepageFull", " seepage full",
+      {{" seepage drag", "seepage expects pressure or full, got 'drag'"},
+       {" seepage", "seepage expects pressure or full, but the command ends there"}});
+  return {pair_linear_coulomb(), fix_darcy_pressure(), relaxed, seepage,
           fix_wall_stress("FixWallStress", "", ""),
           dashpots, fix_shear_stress(), ty3, corrected, fix_nve_sphere_bed()};
 }

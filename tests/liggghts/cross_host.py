@@ -5,8 +5,8 @@ results: both run the same core on the same grains.
     cross_host.py CASE --liggghts BIN --lmp BIN --plugin-dir DIR [--np N --mpiexec mpirun]
                   --workdir DIR
 
-CASE darcy: fix darcy/pressure on grains moved by fix move (inputs/in.cross_darcy), and
-darcy_relaxed: the same with `solver relaxed 0.05 1e-3`; walls:
+CASE darcy: fix darcy/pressure on grains moved by fix move (inputs/in.cross_darcy),
+darcy_relaxed: the same with `solver relaxed 0.05 1e-3`, darcy_seepage: with `seepage full`; walls:
 fix wall/stress and shear/stress on grains moved by fix move and by nve/sphere
 (inputs/in.cross_walls); messages: every bad input of porewater_cases.py, whose error
 messages must be the same text in both hosts. Exits 77 (skipped) when lmp or the plugin is
@@ -87,6 +87,26 @@ def darcy_relaxed(hosts):
           f"grid and grains identical to the last digit; {last['fl[4]']:.0f} sweeps at the last step")
 
 
+def darcy_seepage(hosts):
+    """the same scene with `seepage full`: identical in both hosts, and on the same pressure
+    field as the default force (the grains' motion is prescribed) each grain's horizontal
+    fluid force is the default's times 1/(1 - phi) at the grain, within the porosity clamp's
+    1/(1 - 0.1) to 1/(1 - 0.9); the vertical one holds the unchanged buoyancy"""
+    liggghts = hosts["liggghts"]
+    liggghts.run("in.cross_darcy", {"host": "liggghts"}, "log.pressure")
+    pressure = read_rows(liggghts.path("cross_grains.txt"))
+    scene(hosts, "in.cross_darcy", ["cross_500.vtk", "cross_grains.txt"], {"seepage": "full"})
+    full = read_rows(liggghts.path("cross_grains.txt"))
+    ratios = [full[i][d] / pressure[i][d] for i in pressure for d in (6, 7)
+              if abs(pressure[i][d]) > 1e-9]
+    expect(len(ratios) > 100, f"only {len(ratios)} horizontal fluid forces to compare")
+    expect(all(1.0 / 0.9 <= r <= 1.0 / 0.1 for r in ratios),
+           f"seepage full / pressure outside [1/0.9, 1/0.1]: {min(ratios)} .. {max(ratios)}")
+    print(f"[ report ] cross-host darcy, seepage full (np {liggghts.np}): thermo, grid and grains "
+          f"identical to the last digit; horizontal force / the default's {min(ratios):.4f} .. "
+          f"{max(ratios):.4f} over {len(ratios)} components")
+
+
 def walls(hosts):
     tables = scene(hosts, "in.cross_walls", ["walls_grains.txt"])
     last = tables["liggghts"][-1][-1]
@@ -106,7 +126,8 @@ def messages(hosts):
     print(f"[ report ] cross-host messages: {len(cases)} bad inputs, the same message in both hosts")
 
 
-CASES = {"darcy": darcy, "darcy_relaxed": darcy_relaxed, "walls": walls, "messages": messages}
+CASES = {"darcy": darcy, "darcy_relaxed": darcy_relaxed, "darcy_seepage": darcy_seepage,
+         "walls": walls, "messages": messages}
 
 
 def main():

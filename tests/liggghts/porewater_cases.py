@@ -199,6 +199,8 @@ DARCY_BAD_INPUT = [
     ("top", COLUMN + FIX + UNIT_FLUID + " top closed",
      "top expects noflow, a finite number or v_name, got 'closed'"),
     ("every", COLUMN + FIX + UNIT_FLUID + " every 0", "every expects an integer >= 1, got '0'"),
+    ("seepage", COLUMN + FIX + UNIT_FLUID + " seepage drag",
+     "seepage expects pressure or full, got 'drag'"),
     ("viscosity", COLUMN + FIX + UNIT_FLUID + " viscosity -1",
      "viscosity expects a finite number > 0, got '-1'"),
     ("gravity", COLUMN + FIX + UNIT_FLUID + " gravity 0 0",
@@ -230,6 +232,13 @@ def darcy_bad_input(launch):
                            "read_other")
     expect("the grid of the restart file (2x2x4 cells of 0.5 x 0.5 x 0.25 from (0, 0, 0)) "
            "differs from this command's (2x2x5 cells of 0.5 x 0.5 x 0.2 from (0, 0, 0))" in message,
+           message)
+    # a restart of the other seepage force: refused, naming both
+    launch.run_text(COLUMN + FIX + UNIT_FLUID + " seepage full\nrun 0\nwrite_restart full.restart\n",
+                    "write_full")
+    message = launch.error("atom_modify map array sort 0 0\nread_restart full.restart\n"
+                           "fix bad all darcy/pressure grid 2 2 4" + UNIT_FLUID + "\n", "read_full")
+    expect("the restart file's run had seepage full, this command has seepage pressure" in message,
            message)
 
 

@@ -1,7 +1,7 @@
 // Grain <-> grid coupling of fix darcy/pressure (darcy/coupling.h): deposition of volume,
-// momentum and the predicted position, non-finite grains, the fluid force, a stencil that
-// stays inside the grid for any input, and the per-block path the fixes run equal to the
-// per-cell one.
+// momentum and the predicted position, non-finite grains, the fluid force (both seepage
+// forces), a stencil that stays inside the grid for any input, and the per-block path the
+// fixes run equal to the per-cell one.
 #include "darcy/coupling.h"
 
 #include <gtest/gtest.h>
@@ -74,13 +74,16 @@ TEST(DarcyGrains, FluidForceIsMinusVolumeTimesGradientAndBuoyancy)
   // a uniform gradient interpolates to itself anywhere, folded or wrapped
   const int n = cell_count(grid);
   const double grad[3] = {2.0, -3.0, 50.0}, rho_g[3] = {0.0, 0.0, -9810.0};
-  std::vector<double> field(3 * n);
-  for (int c = 0; c < n; ++c)
+  std::vector<double> field(3 * n), porosity(n);
+  for (int c = 0; c < n; ++c) {
     for (int d = 0; d < 3; ++d) field[3 * c + d] = grad[d];
+    porosity[c] = 0.3 + 0.01 * c;    // read by seepage full only
+  }
   const double volume = 1e-4;
   for (const auto &x : {std::vector<double>{0.17, 1.12, 0.21}, std::vector<double>{-0.29, 1.6, 0.6}}) {
     double f[3];
-    fluid_force_from_cells(grid, field.data(), rho_g, x[0], x[1], x[2], volume, f);
+    fluid_force_from_cells(grid, field.data(), porosity.data(), rho_g, x[0], x[1], x[2], volume,
+                           SEEPAGE_PRESSURE, f);
     for (int d = 0; d < 3; ++d) EXPECT_NEAR(f[d], -volume * (grad[d] + rho_g[d]), 1e-15);
   }
 }
@@ -159,20 +162,77 @@ TEST(DarcyGrains, ForceFromTheBlockTableEqualsTheForceFromTheCells)
   // round-off (the same eight products, summed in the same order) at every point
   const CouplingGrid cg = coupling_grid(grid);
   const int n = cell_count(grid);
-  std::vector<double> gradient(3 * n), table(cg.gradient_table_size());
+  std::vector<double> gradient(3 * n), porosity(n), table(cg.gradient_table_size());
   for (int c = 0; c < 3 * n; ++c) gradient[c] = std::sin(0.37 * c) * 1e3;
-  fill_gradient_table(cg, gradient.data(), table.data());
-  const FluidForceField field{table.data(), gradient.data(), {0.0, 0.0, -9810.0}};
-  int compared = 0;
-  for (double x = -0.35; x < 0.25; x += 0.043)
-    for (double y = 1.05; y < 1.65; y += 0.047)
-      for (double z = 0.2 - 1.5 * grid.dz; z < 0.2 + 7.5 * grid.dz; z += 0.029) {
-        double w[8], f_block[3], f_cells[3];
+  for (int c = 0; c < n; ++c) porosity[c] = 0.4 + 0.3 * std::sin(0.53 * c);
+  fill_gradient_table(cg, gradient.data(), porosity.data(), table.data());
+  for (const int seepage : {SEEPAGE_PRESSURE, SEEPAGE_FULL}) {
+    const FluidForceField field{table.data(), gradient.data(), porosity.data(),
+                                {0.0, 0.0, -9810.0}, 0, seepage};
+    int compared = 0;
+    for (double x = -0.35; x < 0.25; x += 0.043)
+      for (double y = 1.05; y < 1.65; y += 0.047)
+        for (double z = 0.2 - 1.5 * grid.dz; z < 0.2 + 7.5 * grid.dz; z += 0.029) {
+          double w[8], f_block[3], f_cells[3];
+          const int block = grain_stencil(cg, x, y, z, w);
+          grain_fluid_force(cg, field, block, w, x, y, z, 1e-4, f_block);
+          fluid_force_from_cells(grid, gradient.data(), porosity.data(), field.rho_g, x, y, z,
+                                 1e-4, seepage, f_cells);
+          for (int d = 0; d < 3; ++d)
+            ASSERT_EQ(f_block[d], f_cells[d]) << x << " " << y << " " << z << " seepage " << seepage;
+          compared += block >= 0;
+        }
+    ASSERT_GT(compared, 1000);
+  }
+}
+
+TEST(DarcyGrains, FullSeepageDividesThePressureForceByTheSolidFractionAtTheGrain)
+{
+  // A hand-made grid: cell porosities and gradients set here, not made by grains. At points
+  // all over it (wrapped, folded at the bottom and top, beyond it in z), with phi and grad p
+  // interpolated here by the grid's own stencil and interpolate() (the path compute
+  // darcy/grain reports phi by): seepage pressure is -V (grad p + rho_f g) to the bit, as it
+  // always was; seepage full is -V (grad p/(1 - phi) + rho_f g), to round-off (the force
+  // sums phi with the gradient, in the same order: a few ulps of 1/(1 - phi)).
+  const CouplingGrid cg = coupling_grid(grid);
+  const int n = cell_count(grid);
+  std::vector<double> gradient(3 * n), porosity(n), table(cg.gradient_table_size());
+  for (int c = 0; c < 3 * n; ++c) gradient[c] = 2e3 * std::cos(0.41 * c) + 500.0;
+  for (int c = 0; c < n; ++c) porosity[c] = 0.45 + 0.35 * std::sin(0.29 * c + 1.0);    // 0.1-0.8
+  fill_gradient_table(cg, gradient.data(), porosity.data(), table.data());
+  const double rho_g[3] = {0.0, 0.0, -9810.0}, volume = 3e-5;
+  const FluidForceField pressure{table.data(), gradient.data(), porosity.data(),
+                                 {rho_g[0], rho_g[1], rho_g[2]}, 0, SEEPAGE_PRESSURE};
+  FluidForceField full = pressure;
+  full.seepage = SEEPAGE_FULL;
+  double lowest = 1.0, highest = 0.0;
+  int points = 0;
+  for (double x = -0.35; x < 0.25; x += 0.051)
+    for (double y = 1.05; y < 1.65; y += 0.053)
+      for (double z = 0.2 - 1.5 * grid.dz; z < 0.2 + 7.5 * grid.dz; z += 0.031) {
+        int idx[8];
+        double ws[8];
+        stencil(grid, x, y, z, idx, ws);
+        const double phi = interpolate(porosity.data(), 1, idx, ws);
+        double w[8], f_pressure[3], f_full[3];
         const int block = grain_stencil(cg, x, y, z, w);
-        grain_fluid_force(cg, field, block, w, x, y, z, 1e-4, f_block);
-        fluid_force_from_cells(grid, gradient.data(), field.rho_g, x, y, z, 1e-4, f_cells);
-        for (int d = 0; d < 3; ++d) ASSERT_EQ(f_block[d], f_cells[d]) << x << " " << y << " " << z;
-        compared += block >= 0;
+        grain_fluid_force(cg, pressure, block, w, x, y, z, volume, f_pressure);
+        grain_fluid_force(cg, full, block, w, x, y, z, volume, f_full);
+        for (int d = 0; d < 3; ++d) {
+          const double g = interpolate(gradient.data() + d, 3, idx, ws);
+          ASSERT_EQ(f_pressure[d], -volume * (g + rho_g[d])) << x << " " << y << " " << z;
+          const double expected = -volume * (g / (1.0 - phi) + rho_g[d]);
+          ASSERT_NEAR(f_full[d], expected, 1e-13 * volume * std::fabs(g) / (1.0 - phi))
+              << x << " " << y << " " << z;
+        }
+        lowest = std::min(lowest, phi);
+        highest = std::max(highest, phi);
+        ++points;
       }
-  ASSERT_GT(compared, 1000);
+  // the factor 1/(1 - phi) was exercised from near 1 to several
+  EXPECT_LT(lowest, 0.2);
+  EXPECT_GT(highest, 0.7);
+  EXPECT_GT(points, 1000);
+  EXPECT_EQ(seepage_factor(SEEPAGE_PRESSURE, 0.38), 1.0);
+  EXPECT_EQ(seepage_factor(SEEPAGE_FULL, 0.375), 1.6);
 }

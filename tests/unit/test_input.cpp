@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,10 @@ TEST(KeywordReader, EveryMessageNamesTheCommandTheKeywordAndWhatItAccepts)
             "Illegal fix test command: vtk expects a file name prefix, got ''");
   EXPECT_EQ(message_of({"grid", "2", "0", "2"}, darcy),
             "Illegal fix test command: grid expects an integer >= 1, got '0'");
+  EXPECT_EQ(message_of({"grid", "2", "2", "2", "seepage", "drag"}, darcy),
+            "Illegal fix test command: seepage expects pressure or full, got 'drag'");
+  EXPECT_EQ(message_of({"grid", "2", "2", "2", "seepage"}, darcy),
+            "Illegal fix test command: seepage expects pressure or full, but the command ends there");
   auto pair = [](KeywordReader &in) { parse_linear_coulomb(in); };
   EXPECT_EQ(message_of({"overlap_limit", "3"}, pair),
             "Illegal fix test command: overlap_limit expects a number in (0, 2], got '3'");
@@ -90,6 +95,7 @@ TEST(KeywordReader, DefaultsAreThoseOfTheDocPages)
   EXPECT_EQ(s.params.porosity_min, 0.1);
   EXPECT_EQ(s.params.porosity_max, 0.9);
   EXPECT_EQ(s.every, 1);
+  EXPECT_EQ(s.seepage, SEEPAGE_PRESSURE);
   EXPECT_TRUE(s.interpolate_every_step);
   EXPECT_TRUE(s.top_dirichlet);
   EXPECT_EQ(s.top.variable, "ptop");
@@ -121,6 +127,60 @@ TEST(RestartState, ABlockReadsBackAndAnotherFormatOrSizeIsRefused)
             "package");
   const std::vector<double> foreign = {2.0, 1.0, 1.0, 4.0, 0, 0, 0, 0};    // an older layout
   EXPECT_NE(refusal(wall, (const char *) foreign.data(), 4), "");
+  // a style that also reads older versions: those read back with their version, others not
+  const RestartFormat wall_2{RestartStyle::WallStress, 3, "fix wall/stress", 2};
+  EXPECT_EQ(refusal(wall_2, bytes, 4),
+            "the restart file's state for fix wall/stress has format version 1, this build reads "
+            "version 2 to 3");
+  const std::vector<double> block_2 =
+      restart_block(RestartFormat{RestartStyle::WallStress, 2, "fix wall/stress"}, values);
+  int version = 0;
+  EXPECT_EQ(restart_values(wall_2, (const char *) block_2.data(), 4, &version), values);
+  EXPECT_EQ(version, 2);
+}
+
+namespace {
+// a fluid of a 2 x 2 x 3 grid with the given `seepage` value
+std::unique_ptr<DarcyFluid> seepage_fluid(const char *seepage)
+{
+  KeywordReader in("fix darcy/pressure",
+                   std::vector<std::string>{"grid", "2", "2", "3", "viscosity", "1",
+                                            "compressibility", "1", "density", "1", "permeability",
+                                            "1", "seepage", seepage});
+  return std::unique_ptr<DarcyFluid>(new DarcyFluid(
+      parse_darcy(in, 0.0, 1.0), GridGeom{0, 0, 0, 0.5, 0.5, 1.0 / 3.0, 2, 2, 3}, "f"));
+}
+}    // namespace
+
+TEST(DarcyFluid, RestartRecordsTheSeepageAndAContinuationWithTheOtherIsRefused)
+{
+  const std::vector<double> full = seepage_fluid("full")->restart_state(),
+                            pressure = seepage_fluid("pressure")->restart_state();
+  auto refusal = [](const char *seepage, const std::vector<double> &state, int version) {
+    try {
+      seepage_fluid(seepage)->restore(state, version);
+    } catch (const InputError &e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(refusal("full", full, 4), "");
+  EXPECT_EQ(refusal("pressure", pressure, 4), "");
+  EXPECT_EQ(refusal("pressure", full, 4),
+            "fix darcy/pressure: the restart file's run had seepage full, this command has "
+            "seepage pressure: continue with the force the run started with, or start a new run");
+  EXPECT_EQ(refusal("full", pressure, 4),
+            "fix darcy/pressure: the restart file's run had seepage pressure, this command has "
+            "seepage full: continue with the force the run started with, or start a new run");
+  // a state of format version 3 (written before the keyword: without its value) was a run
+  // with seepage pressure
+  std::vector<double> version_3 = pressure;
+  version_3.erase(version_3.begin() + 13);
+  EXPECT_EQ(refusal("pressure", version_3, 3), "");
+  EXPECT_NE(refusal("full", version_3, 3).find("had seepage pressure, this command has seepage full"),
+            std::string::npos);
+  EXPECT_EQ(DarcyFluid::RESTART.version, 4);
+  EXPECT_EQ(DarcyFluid::RESTART.oldest_version, 3);
 }
 
 TEST(DarcyFluid, MemoryIsWhatItHoldsAndATooLargeGridStopsBeforeAllocating)

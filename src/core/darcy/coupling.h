@@ -104,7 +104,7 @@ struct CouplingGrid {
   StencilBlocks blocks;
   DepositLayout cells;
   static constexpr int BLOCK_DEPOSITS = DEPOSITS_PER_CORNER * CORNERS;
-  static constexpr int BLOCK_GRADIENT = 4 * CORNERS;    // 3 components and a pad per corner
+  static constexpr int BLOCK_GRADIENT = 4 * CORNERS;    // 3 components and phi per corner
   PW_INLINE int block_sums() const { return BLOCK_DEPOSITS * blocks.count(); }
   PW_INLINE int cell_sums() const { return block_sums(); }    // offset of the cell deposits
   PW_INLINE int sums_size() const { return block_sums() + cells.size(); }
@@ -191,58 +191,81 @@ inline void fold_block_deposits(const CouplingGrid &cg, double *sums)
 }
 
 // The 3 components of a cell-centre vector field (interleaved xyz) at the 8 cells idx,
-// corner-major and padded to 4 (so that the components are summed side by side):
-// out[4*c + d], out[4*c + 3] = 0.
-PW_INLINE void corner_vectors(const double *field, const int idx[8], double out[32])
+// corner-major and padded to 4 with a cell-centre scalar (so that the components are
+// summed side by side and the scalar comes interpolated with the same weights):
+// out[4*c + d], out[4*c + 3] = scalar[idx[c]].
+PW_INLINE void corner_vectors(const double *field, const double *scalar, const int idx[8],
+                              double out[32])
 {
   for (int c = 0; c < 8; ++c) {
     for (int d = 0; d < 3; ++d) out[4 * c + d] = field[3 * idx[c] + d];
-    out[4 * c + 3] = 0.0;
+    out[4 * c + 3] = scalar[idx[c]];
   }
 }
 
 // The table of corner gradients per block (BLOCK_GRADIENT values a block) from the
-// cell-centre pressure gradient, once per fluid step.
-inline void fill_gradient_table(const CouplingGrid &cg, const double *gradient, double *table)
+// cell-centre pressure gradient, each corner padded with its cell's porosity, once per
+// fluid step.
+inline void fill_gradient_table(const CouplingGrid &cg, const double *gradient,
+                                const double *porosity, double *table)
 {
   for (int block = 0; block < cg.blocks.count(); ++block) {
     int idx[8];
     corner_cells(cg.geom, cg.blocks.base(block), idx);
-    corner_vectors(gradient, idx, table + CouplingGrid::BLOCK_GRADIENT * block);
+    corner_vectors(gradient, porosity, idx, table + CouplingGrid::BLOCK_GRADIENT * block);
   }
 }
 
-// Fluid force f = -V (grad p + rho_f g) on a grain of volume V: grad p interpolated with
-// the stencil weights w from the gradients at the 8 stencil cells (corner_vectors); the
-// second term is buoyancy (rho_g = rho_f g).
+// Which share of the water's force per bulk volume, -grad p, the grains take (doc/model.md
+// §3): SEEPAGE_PRESSURE the pressure gradient on their own volume alone, -V grad p (the
+// paper's: the grains carry 1 - phi of it); SEEPAGE_FULL that and the drag of the flow
+// through them, -V grad p/(1 - phi) (Biot's, Terzaghi's sigma' = sigma - p).
+enum Seepage { SEEPAGE_PRESSURE = 0, SEEPAGE_FULL = 1 };
+
+// the factor on -V grad p of a grain at porosity phi (clamped below 1 by the grid)
+PW_INLINE double seepage_factor(int seepage, double porosity)
+{
+  return seepage == SEEPAGE_FULL ? 1.0 / (1.0 - porosity) : 1.0;
+}
+
+// Fluid force f = -V (F grad p + rho_f g) on a grain of volume V: grad p and phi
+// interpolated with the stencil weights w from the corners' gradients and porosities
+// (corner_vectors), F = seepage_factor(seepage, phi); the second term is buoyancy
+// (rho_g = rho_f g). With SEEPAGE_PRESSURE, F = 1 exactly.
 PW_INLINE void fluid_force_from_corners(const double corner_gradient[32], const double rho_g[3],
-                                        const double w[8], double volume, double f[3])
+                                        const double w[8], double volume, int seepage,
+                                        double f[3])
 {
   double sum[4] = {0.0, 0.0, 0.0, 0.0};
   for (int c = 0; c < 8; ++c)
     for (int d = 0; d < 4; ++d) sum[d] += w[c] * corner_gradient[4 * c + d];
-  for (int d = 0; d < 3; ++d) f[d] = -volume * (sum[d] + rho_g[d]);
+  const double factor = seepage_factor(seepage, sum[3]);
+  for (int d = 0; d < 3; ++d) f[d] = -volume * (factor * sum[d] + rho_g[d]);
 }
 
-// The same for a grain at x, from the cell-centre gradients (interleaved xyz).
+// The same for a grain at x, from the cell-centre gradients (interleaved xyz) and porosities.
 PW_INLINE void fluid_force_from_cells(const GridGeom &g, const double *pressure_gradient,
-                                      const double rho_g[3], double x0, double x1, double x2,
-                                      double volume, double f[3])
+                                      const double *porosity, const double rho_g[3], double x0,
+                                      double x1, double x2, double volume, int seepage,
+                                      double f[3])
 {
   int idx[8];
   double w[8], corner_gradient[32];
   stencil(g, x0, x1, x2, idx, w);
-  corner_vectors(pressure_gradient, idx, corner_gradient);
-  fluid_force_from_corners(corner_gradient, rho_g, w, volume, f);
+  corner_vectors(pressure_gradient, porosity, idx, corner_gradient);
+  fluid_force_from_corners(corner_gradient, rho_g, w, volume, seepage, f);
 }
 
 // What the force on the grains reads after a fluid step: the per-block corner gradients
-// and, for grains outside every block, the cell-centre gradients; rho_f g.
+// and porosities and, for grains outside every block, the cell-centre gradients and
+// porosities; rho_f g; the seepage force (Seepage).
 struct FluidForceField {
   const double *gradient_table;
   const double *cell_gradient;
+  const double *cell_porosity;
   double rho_g[3];
   int horizontal_only_bit;    // grains of this group bit get no vertical fluid force (novertical)
+  int seepage;
 };
 
 // The fluid force on a grain at x with block `block` and weights w (grain_stencil or
@@ -253,9 +276,10 @@ PW_INLINE void grain_fluid_force(const CouplingGrid &cg, const FluidForceField &
 {
   if (block >= 0)
     fluid_force_from_corners(field.gradient_table + CouplingGrid::BLOCK_GRADIENT * block,
-                             field.rho_g, w, volume, f);
+                             field.rho_g, w, volume, field.seepage, f);
   else
-    fluid_force_from_cells(cg.geom, field.cell_gradient, field.rho_g, x0, x1, x2, volume, f);
+    fluid_force_from_cells(cg.geom, field.cell_gradient, field.cell_porosity, field.rho_g, x0,
+                           x1, x2, volume, field.seepage, f);
 }
 
 // ---------------------------------------------------------------------------------------

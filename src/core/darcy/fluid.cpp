@@ -11,11 +11,18 @@
 
 namespace porewater {
 
-const RestartFormat DarcyFluid::RESTART{RestartStyle::Darcy, 3, "fix darcy/pressure"};
+// version 4 records `seepage`; version 3 states (before it) were all seepage pressure
+const RestartFormat DarcyFluid::RESTART{RestartStyle::Darcy, 4, "fix darcy/pressure", 3};
 
 namespace {
 
-const int STATE_HEADER = 13;    // values before the solver state, see restart_state()
+const int STATE_HEADER = 14;    // values before the solver state, see restart_state()
+const int STATE_HEADER_3 = 13;  // the same in format version 3 (no seepage)
+
+const char *seepage_name(int seepage)
+{
+  return seepage == SEEPAGE_FULL ? "full" : "pressure";
+}
 
 // the first non-finite value's index, -1 if all are finite
 int first_nonfinite(const std::vector<double> &values)
@@ -93,11 +100,14 @@ DarcyFluid::DarcyFluid(const DarcySettings &settings, const GridGeom &geom, cons
   if (!settings_.z_top_given) settings_.z_top = NumberOrVariable{solver_->z_grid_top(), ""};
   sums_.assign(grid_.sums_size(), 0.0);
   gradient_table_.assign(grid_.gradient_table_size(), 0.0);
-  field_ = FluidForceField{gradient_table_.data(), solver_->pressure_gradient().data(),
+  field_ = FluidForceField{gradient_table_.data(),
+                           solver_->pressure_gradient().data(),
+                           solver_->porosity().data(),
                            {settings.density * settings.gravity[0],
                             settings.density * settings.gravity[1],
                             settings.density * settings.gravity[2]},
-                           0};
+                           0,
+                           settings.seepage};
 }
 
 DarcyFluid::~DarcyFluid()
@@ -131,6 +141,9 @@ std::string DarcyFluid::summary() const
       number(g.dy) + " x " + number(g.dz) + ", z from " + number(g.zlo) + " to " +
       number(z_grid_top()) + ", fluid step every " + std::to_string(settings_.every) +
       " step(s)\n";
+  if (settings_.seepage == SEEPAGE_FULL)
+    text += "fix darcy/pressure " + id_ +
+        ": seepage full: the grains take -V grad p/(1 - phi), the drag of the flow included\n";
   if (!settings_.gravity_given)
     text += "fix darcy/pressure " + id_ +
         ": no gravity keyword: no buoyancy force (rho_f V g) on the grains\n";
@@ -211,9 +224,18 @@ void DarcyFluid::start(FluidHost &host, GrainBackend &grains, long long step)
                         b.p_top, b.p_bottom);
   deposit_and_sum(host, grains, step, 0.0);
   update_porosity(host, step);
-  fill_gradient_table(grid_, solver_->pressure_gradient().data(), gradient_table_.data());
+  refresh_force_field();
   last_fluid_step_ = step;
   started_ = true;
+}
+
+// the force field of the fluid state now: the corner gradients and porosities per block, and
+// the cell porosity (update_porosity swaps the solver's porosity arrays)
+void DarcyFluid::refresh_force_field()
+{
+  fill_gradient_table(grid_, solver_->pressure_gradient().data(), solver_->porosity().data(),
+                      gradient_table_.data());
+  field_.cell_porosity = solver_->porosity().data();
   field_changed_ = true;
 }
 
@@ -232,8 +254,7 @@ void DarcyFluid::advance(FluidHost &host, GrainBackend &grains, long long step, 
   last_solve_ = solver_->step(interval, b.p_top, b.z_top, b.p_bottom);
   last_fluid_step_ = step;
   check_solution(host, step);
-  fill_gradient_table(grid_, solver_->pressure_gradient().data(), gradient_table_.data());
-  field_changed_ = true;
+  refresh_force_field();
 }
 
 void DarcyFluid::deposit_and_sum(FluidHost &host, GrainBackend &grains, long long step,
@@ -411,7 +432,8 @@ const double *DarcyFluid::field(const std::string &name) const
 
 /* ----------------------------------------------------------------------
    restart: [grid origin and spacing (6), last fluid step, started, the last solve
-   (converged, iterations, residual, tolerance, worst cell), solver state]
+   (converged, iterations, residual, tolerance, worst cell), seepage, solver state];
+   format version 3 had no seepage
 ------------------------------------------------------------------------- */
 
 std::vector<double> DarcyFluid::restart_state() const
@@ -421,44 +443,51 @@ std::vector<double> DarcyFluid::restart_state() const
   std::vector<double> state = {g.xlo, g.ylo, g.zlo, g.dx, g.dy, g.dz,
                                (double) last_fluid_step_, started_ ? 1.0 : 0.0,
                                r.converged ? 1.0 : 0.0, (double) r.iterations, r.residual,
-                               r.tolerance, (double) r.worst_cell};
+                               r.tolerance, (double) r.worst_cell,
+                               (double) settings_.seepage};
   const std::vector<double> solver_state = solver_->state();
   state.insert(state.end(), solver_state.begin(), solver_state.end());
   return state;
 }
 
-void DarcyFluid::restore(const std::vector<double> &state)
+void DarcyFluid::restore(const std::vector<double> &state, int version)
 {
   const GridGeom &g = grid_.geom;
-  const size_t expected = STATE_HEADER + DarcySolver::state_size(g);
+  const int header = version >= 4 ? STATE_HEADER : STATE_HEADER_3;
+  const size_t expected = header + DarcySolver::state_size(g);
   const std::string ours = std::to_string(g.nx) + "x" + std::to_string(g.ny) + "x" +
       std::to_string(g.nz) + " cells of " + number(g.dx) + " x " + number(g.dy) + " x " +
       number(g.dz) + " from (" + number(g.xlo) + ", " + number(g.ylo) + ", " + number(g.zlo) + ")";
-  if (state.size() < STATE_HEADER + 3)
+  if (state.size() < (size_t) header + 3)
     throw InputError("fix darcy/pressure: the restart file's fluid state is truncated (" +
                      std::to_string(state.size()) + " values)");
   const double *s = state.data();
-  const std::string theirs = number(s[STATE_HEADER]) + "x" + number(s[STATE_HEADER + 1]) + "x" +
-      number(s[STATE_HEADER + 2]) + " cells of " + number(s[3]) + " x " + number(s[4]) + " x " +
+  const std::string theirs = number(s[header]) + "x" + number(s[header + 1]) + "x" +
+      number(s[header + 2]) + " cells of " + number(s[3]) + " x " + number(s[4]) + " x " +
       number(s[5]) + " from (" + number(s[0]) + ", " + number(s[1]) + ", " + number(s[2]) + ")";
   const double ours_geom[6] = {g.xlo, g.ylo, g.zlo, g.dx, g.dy, g.dz};
   const double length = std::max({g.nx * g.dx, g.ny * g.dy, g.nz * g.dz});
-  bool same = (int) s[STATE_HEADER] == g.nx && (int) s[STATE_HEADER + 1] == g.ny &&
-      (int) s[STATE_HEADER + 2] == g.nz;
+  bool same = (int) s[header] == g.nx && (int) s[header + 1] == g.ny && (int) s[header + 2] == g.nz;
   for (int d = 0; d < 6; ++d) same = same && std::fabs(s[d] - ours_geom[d]) <= 1e-12 * length;
   if (!same)
     throw InputError("fix darcy/pressure: the grid of the restart file (" + theirs +
                      ") differs from this command's (" + ours + ")");
+  // the force on the grains is part of the model a run was started with
+  const int seepage = version >= 4 ? (int) s[13] : SEEPAGE_PRESSURE;
+  if (seepage != settings_.seepage)
+    throw InputError(std::string("fix darcy/pressure: the restart file's run had seepage ") +
+                     seepage_name(seepage) + ", this command has seepage " +
+                     seepage_name(settings_.seepage) +
+                     ": continue with the force the run started with, or start a new run");
   if (state.size() != expected ||
-      !solver_->set_state(std::vector<double>(state.begin() + STATE_HEADER, state.end())))
+      !solver_->set_state(std::vector<double>(state.begin() + header, state.end())))
     throw InputError("fix darcy/pressure: the restart file's fluid state for the grid " + ours +
                      " holds " + std::to_string(state.size()) + " values where " +
                      std::to_string(expected) + " are needed (truncated or damaged)");
   last_fluid_step_ = (long long) s[6];
   started_ = s[7] != 0.0;
   last_solve_ = StepResult{s[8] != 0.0, (int) s[9], s[10], s[11], (int) s[12]};
-  fill_gradient_table(grid_, solver_->pressure_gradient().data(), gradient_table_.data());
-  field_changed_ = true;
+  refresh_force_field();
   stencils_kept_ = false;
 }
 

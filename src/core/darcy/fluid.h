@@ -127,8 +127,9 @@ class DarcyFluid {
   const double *field(const std::string &name) const;
 
   std::vector<double> restart_state() const;
-  // throws InputError saying what differs from this fix's grid
-  void restore(const std::vector<double> &state);
+  // a state of RESTART's format `version` (3: before `seepage`, written with seepage
+  // pressure); throws InputError saying what differs from this fix's grid or seepage
+  void restore(const std::vector<double> &state, int version = RESTART.version);
 
  private:
   void start(FluidHost &host, GrainBackend &grains, long long step);
@@ -138,6 +139,7 @@ class DarcyFluid {
   BoundaryValues boundary_values(FluidHost &host, long long step);
   void check_solution(FluidHost &host, long long step);
   void apply_or_hold_force(FluidHost &host, GrainBackend &grains, long long step, bool fluid_step);
+  void refresh_force_field();
   void write_output(FluidHost &host, long long step, double time);
   std::string describe_cell(int cell) const;
 

@@ -30,16 +30,20 @@ void write_restart_block(std::FILE *fp, const RestartFormat &format,
 }
 
 std::vector<double> restart_values(const RestartFormat &format, const char *block,
-                                   long expected_count)
+                                   long expected_count, int *version)
 {
   double header[HEADER];
   std::memcpy(header, block, sizeof(header));
   const std::string what = "the restart file's state for " + std::string(format.command);
   if (header[0] != PACKAGE_MARK || header[1] != double(int(format.style)))
     throw InputError(what + " was not written by this style of this package");
-  if (header[2] != double(format.version))
+  const int oldest = format.oldest_version > 0 ? format.oldest_version : format.version;
+  if (!(header[2] == std::floor(header[2]) && header[2] >= oldest && header[2] <= format.version))
     throw InputError(what + " has format version " + std::to_string((long) header[2]) +
-                     ", this build reads version " + std::to_string(format.version));
+                     ", this build reads version " +
+                     (oldest < format.version ? std::to_string(oldest) + " to " : std::string()) +
+                     std::to_string(format.version));
+  if (version) *version = (int) header[2];
   const double count = header[3];
   if (!(count >= 0.0 && count == std::floor(count) && count < 1e12))
     throw InputError(what + " is damaged: its value count is " + std::to_string(count));

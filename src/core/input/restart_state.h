@@ -18,6 +18,7 @@ struct RestartFormat {
   RestartStyle style;
   int version;
   const char *command;    // for messages, e.g. "fix darcy/pressure"
+  int oldest_version = 0; // > 0: the style also reads the versions from this one on
 };
 
 // the block to write: header + values
@@ -29,9 +30,10 @@ void write_restart_block(std::FILE *fp, const RestartFormat &format,
                          const std::vector<double> &values);
 
 // the values of a block written by restart_block; an InputError unless the header matches
-// `format` and (when expected_count >= 0) holds exactly expected_count values
+// `format` (its version, or one from oldest_version on) and (when expected_count >= 0)
+// holds exactly expected_count values; *version, if given, receives the block's version
 std::vector<double> restart_values(const RestartFormat &format, const char *block,
-                                   long expected_count);
+                                   long expected_count, int *version = nullptr);
 
 }    // namespace porewater
 

@@ -212,6 +212,8 @@ DarcySettings parse_darcy(KeywordReader &in, double box_zlo, double box_zhi)
       }
     } else if (key == "novertical") {
       s.novertical_group = in.word("a group ID");
+    } else if (key == "seepage") {
+      s.seepage = in.choice({"pressure", "full"}) == 0 ? SEEPAGE_PRESSURE : SEEPAGE_FULL;
     } else if (key == "every") {
       s.every = in.count();
     } else if (key == "interpolate") {
@@ -230,8 +232,8 @@ DarcySettings parse_darcy(KeywordReader &in, double box_zlo, double box_zhi)
     } else {
       in.unknown_keyword({"grid", "viscosity", "compressibility", "density", "permeability",
                           "top", "ztop", "bottom", "initial", "gravity", "porosity", "kmax",
-                          "tol", "atol", "maxiter", "solver", "novertical", "every", "interpolate", "zhi",
-                          "profile", "append", "vtk"});
+                          "tol", "atol", "maxiter", "solver", "novertical", "seepage", "every",
+                          "interpolate", "zhi", "profile", "append", "vtk"});
     }
   }
   in.require({"grid", "viscosity", "compressibility", "density", "permeability"},

@@ -6,6 +6,7 @@
 #define PW_INPUT_SETTINGS_H
 
 #include "contact/linear_coulomb.h"
+#include "darcy/coupling.h"
 #include "darcy/solver.h"
 #include "input/keywords.h"
 
@@ -89,6 +90,7 @@ struct DarcySettings {
   // the grains of this group get no vertical fluid force (buoyancy included), as the
   // original program's shear plate; empty: none
   std::string novertical_group;
+  int seepage = SEEPAGE_PRESSURE;    // the fluid force on the grains: -V grad p, or SEEPAGE_FULL
   int every = 1;                     // fluid step every this many grain steps
   bool interpolate_every_step = true;  // false: grain forces held between fluid steps
   int profile_every = 0;             // 0: no profile file
