@@ -15,6 +15,7 @@ Not in it, and why (each says the same in its own docstring):
 - the GPU check on a GPU (it runs here on KOKKOS' host backend, as its dry run does);
 - the parts that need valgrind or perf (step_cost.py, instruction_counts.py, fluid_share.py)
   run where those are installed and usable, said so otherwise;
+- seepage/consolidation.py: ctest runs its CI case (lammps.seepage_consolidation, --check);
 - pair_bench's chute scene (--scene chute): it differs from the bed scene only in the input
   and data file it names, and its 32,000-grain starts would add half a minute; the GPU
   check's roundoff and growth parts: the table_s1 part runs the same dump check and the same
@@ -72,13 +73,10 @@ def entries(plugin):
          ["{pages}/fidelity/ensemble_results.md", "{work}/twin_member1/timeseries.txt"], None),
         ("fidelity: the paper's scene (stiff preset, default again)", "fidelity/paper_scene.py",
          ["--work", "{work}", "--only", "stiff,default"],
-         ["{work}/stiff/member1/timeseries.txt", "{work}/stiff_eps0.07/member0/cost_legs.txt",
+         ["{work}/stiff/member1/timeseries.txt", "{work}/stiff_eps0.07/member0/cost.txt",
           "{work}/default/member1/timeseries.txt"], None),
         ("fidelity: the paper's scene's tables", "fidelity/paper_scene.py",
          ["--work", "{work}", "--report"], ["{pages}/fidelity/paper_scene_results.md"], None),
-        ("seepage: consolidation on each force (the CI case)", "seepage/consolidation.py",
-         ["--case", "ci", "--workdir", "{work}/seepage"],
-         ["{pages}/seepage/consolidation_table.md", "{pages}/seepage/consolidation.png"], None),
         ("seepage: the paper's cycle on each force (dry run)", "seepage/ensembles.py",
          ["--work", "{work}", "--dry", "300"], ["{work}/dry/default_full/timeseries.txt"], None),
         ("paper_figures: cycle, permeability, creep", "paper_figures/figures.py",

@@ -14,7 +14,7 @@ import numpy as np
 from scipy import stats
 
 from . import EXAMPLE, short
-from .runs import complete, prepare, timed_run
+from .runs import complete, run_example
 from porewater_analysis.cycles import after_min_n
 from porewater_analysis.report import analyse_run, parameters
 
@@ -88,14 +88,10 @@ def np2_members():
 
 
 def run_one(work, name, variables, ranks=1, args=(), threads=1):
-    """in.tidal_shear for CYCLES cycles in work/name unless complete there: (name, CPU s or
-    None)"""
-    d = os.path.join(work, name)
-    if complete(os.path.join(d, "timeseries.txt"), CYCLES * PERIOD):
-        return name, None
-    prepare(d)
-    return name, timed_run(d, "in.tidal_shear", dict(variables, cycles=RUN_CYCLES), ranks=ranks,
-                           args=args, threads=threads)
+    """in.tidal_shear for CYCLES cycles in work/name unless complete there, continued where it
+    stopped (runs.run_example): (name, CPU s or None)"""
+    return name, run_example(os.path.join(work, name), dict(variables, cycles=RUN_CYCLES),
+                             CYCLES * PERIOD, ranks=ranks, args=args, threads=threads)
 
 
 def band(values, k=1, metrics=1):

@@ -58,21 +58,43 @@ def time_step(kn, eps=0.07, radius=0.01, rho=2600.0):
     return eps / np.sqrt(kn / (rho * 4.0 / 3.0 * np.pi * radius ** 3))
 
 
-def timed_run(workdir, infile, variables, ranks=1, args=(), threads=1):
-    """run_lmp, its CPU and wall seconds written to workdir/cost.txt (with the load average
-    of the last minute before and after)"""
+def timed_run(workdir, infile, variables, ranks=1, args=(), threads=1, log="log.lammps"):
+    """run_lmp, its CPU and wall seconds added as a line to workdir/cost.txt (with the load
+    average of the last minute before and after): a run continued in legs has a line a leg"""
     load_before = os.getloadavg()[0]
     start = time.time()
-    cpu = run_lmp(workdir, infile, variables, ranks=ranks, args=args, threads=threads)
-    with open(os.path.join(workdir, "cost.txt"), "w") as f:
+    cpu = run_lmp(workdir, infile, variables, ranks=ranks, args=args, threads=threads, log=log)
+    with open(os.path.join(workdir, "cost.txt"), "a") as f:
         f.write("%.1f %.1f %.2f %.2f\n" % (cpu, time.time() - start, load_before, os.getloadavg()[0]))
     return cpu
 
 
 def read_cost(workdir):
-    """[CPU s, wall s] of timed_run (and the load before and after where recorded), or None"""
+    """[CPU s, wall s, load before the first leg, load after the last] of timed_run's legs
+    (summed), or None"""
     path = os.path.join(workdir, "cost.txt")
-    return [float(v) for v in open(path).read().split()] if os.path.exists(path) else None
+    if not os.path.exists(path):
+        return None
+    legs = np.loadtxt(path, ndmin=2)
+    return [legs[:, 0].sum(), legs[:, 1].sum()] + list(legs[[0, -1], [2, 3]]) \
+        if legs.shape[1] >= 4 else list(legs[:, :2].sum(axis=0))
+
+
+def run_example(workdir, variables, t_end, ranks=1, args=(), threads=1, data=None):
+    """in.tidal_shear in workdir until its time series reaches t_end s (timed_run): from the
+    start, or continued from workdir's checkpoint where a run stopped before (-var continue 1,
+    log.continued); `data`: a file to copy there first. The run's CPU s, or None if it was
+    complete"""
+    if complete(os.path.join(workdir, "timeseries.txt"), t_end):
+        return None
+    go_on = os.path.exists(os.path.join(workdir, "checkpoint.restart"))
+    if not go_on:
+        prepare(workdir)
+        if data:
+            shutil.copy(data, workdir)
+    return timed_run(workdir, "in.tidal_shear", dict(variables, **({"continue": 1} if go_on else {})),
+                     ranks=ranks, args=args, threads=threads,
+                     log="log.continued" if go_on else "log.lammps")
 
 
 def loop_time(log, last=True):

@@ -24,15 +24,14 @@ import argparse
 import os
 import shutil
 import sys
-import time
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from common import out_dir, short    # noqa: E402
-from common.ensembles import AGAINST_PAPER, PERTURB, band, run_metrics, summary    # noqa: E402
-from common.runs import complete, freeze_plugin, load, prepare, run_lmp    # noqa: E402
+from common.ensembles import AGAINST_PAPER, PERIOD, PERTURB, band, run_metrics, summary    # noqa: E402
+from common.runs import complete, freeze_plugin, load, prepare, run_example, run_lmp    # noqa: E402
 
 WORK = "/work/runs/paper_scene"
 CYCLES = short(4, 0.002)
@@ -45,34 +44,6 @@ DUMP_CYCLES = 0.25
 
 def member_variables(k):
     return {} if k == 0 else {"perturb": PERTURB, "perturb_seed": k}
-
-
-def legs_cost(d):
-    """[CPU s, wall s, load before, load after] summed over a run's legs (cost_legs.txt)"""
-    path = os.path.join(d, "cost_legs.txt")
-    if not os.path.exists(path):
-        return None
-    legs = np.loadtxt(path, ndmin=2)
-    return [legs[:, 0].sum(), legs[:, 1].sum(), legs[0, 2], legs[-1, 3]]
-
-
-def run_example(d, variables, t_end, ranks=1, data=None):
-    """in.tidal_shear in d until its time series reaches t_end, continued from d's checkpoint
-    where a run stopped before; every leg's CPU and wall s and load in d/cost_legs.txt"""
-    if complete(os.path.join(d, "timeseries.txt"), t_end):
-        return None
-    go_on = os.path.exists(os.path.join(d, "checkpoint.restart"))
-    if not go_on:
-        prepare(d)
-        if data:
-            shutil.copy(data, os.path.join(d, os.path.basename(data)))
-    load_before, start = os.getloadavg()[0], time.time()
-    cpu = run_lmp(d, "in.tidal_shear", dict(variables, **({"continue": 1} if go_on else {})),
-                  ranks=ranks, log="log.continued" if go_on else "log.lammps")
-    with open(os.path.join(d, "cost_legs.txt"), "a") as f:
-        f.write("%.1f %.1f %.2f %.2f\n" % (cpu, time.time() - start, load_before,
-                                          os.getloadavg()[0]))
-    return cpu
 
 
 def ensemble_runs(work):
@@ -93,7 +64,7 @@ def run_pool(work, runs, jobs=2):
     pool = ThreadPoolExecutor(jobs)
     done = pool.map(lambda run: (run[0], run_example(os.path.join(work, run[0]),
                                                      dict(run[1], cycles=CYCLES),
-                                                     CYCLES * 2.5)), runs)
+                                                     CYCLES * PERIOD)), runs)
     for name, cpu in done:
         print("%s: %s" % (name, "done before" if cpu is None else "%.0f s CPU" % cpu), flush=True)
 

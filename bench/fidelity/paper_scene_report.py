@@ -9,7 +9,7 @@ import numpy as np
 
 from common import COMMON
 from common.ensembles import METRICS, band, mean_band, run_metrics, summary
-from common.runs import load
+from common.runs import load, read_cost
 from paper_scene import (DEFAULT_MEMBERS, STIFF_EPS_CHECK, STIFF_MEMBERS, TABLE_S1_CYCLES,
                          eps_check)
 from porewater_analysis import original
@@ -277,8 +277,7 @@ def dump_check(d, data="bed.data"):
 
 def legs_text(work, folders):
     """CPU s per run (all its legs) over the complete runs of `folders`, with the loads"""
-    from paper_scene import legs_cost
-    costs = [legs_cost(os.path.join(work, f)) for f in folders]
+    costs = [read_cost(os.path.join(work, f)) for f in folders]
     costs = [c for c in costs if c]
     if not costs:
         return "not recorded"
