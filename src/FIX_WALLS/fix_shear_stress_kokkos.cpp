@@ -4,16 +4,58 @@
 
 #include "fix_shear_stress_kokkos.h"
 
-#include "kokkos_grains.h"
-
 #include "atom_kokkos.h"
 #include "atom_masks.h"
+#include "comm.h"
+#include "domain.h"
+#include "force.h"
+#include "neighbor.h"
+#include "update.h"
 
 using namespace LAMMPS_NS;
 
+namespace {
+
+template <class DeviceType> using Grains = porewater::KokkosGrains<DeviceType>;
+
+// The layer's sums and, once on the device with their totals, the plate's step
+template <class DeviceType> struct PlateSumsThenStep {
+  static constexpr int count = porewater::PlateSums<Grains<DeviceType>>::count;
+  porewater::PlateSums<Grains<DeviceType>> body;
+  Kokkos::View<porewater::PlateOnDevice, DeviceType> state;
+  double area, tau, mass, force_to_velocity, bound;
+  long long step;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, double *sums) const { body(i, sums); }
+  KOKKOS_INLINE_FUNCTION void final(double *sums) const
+  {
+    porewater::PlateOnDevice &s = state();
+    const porewater::PlateStepResult r = porewater::plate_post_force(
+        s.plate, sums, false, area, tau, mass, force_to_velocity, bound);
+    if (r.verdict != porewater::PLATE_MOVING && s.verdict == porewater::PLATE_MOVING) {
+      s.verdict = r.verdict;
+      s.verdict_step = step;
+      s.verdict_value = r.value;
+    }
+  }
+};
+
+// every grain of the layer its share of the plate's force, as the step above left it
+template <class DeviceType> struct PlateMotionOnDevice {
+  Grains<DeviceType> grains;
+  int groupbit;
+  Kokkos::View<porewater::PlateOnDevice, DeviceType> state;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
+  {
+    porewater::PlateMotion<Grains<DeviceType>>{grains, groupbit, state().plate.force_per_mass}(i);
+  }
+};
+
+}    // namespace
+
 template <class DeviceType>
 FixShearStressKokkos<DeviceType>::FixShearStressKokkos(LAMMPS *lmp, int narg, char **arg) :
-    FixShearStress(lmp, narg, arg)
+    FixShearStress(lmp, narg, arg), on_device(false), host_current(true),
+    state("shear/stress:state"), d_totals("shear/stress:totals", PlateSumsThenStep<DeviceType>::count)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
@@ -22,13 +64,81 @@ FixShearStressKokkos<DeviceType>::FixShearStressKokkos(LAMMPS *lmp, int narg, ch
   datamask_modify = EMPTY_MASK;
 }
 
+// the setup's plate on the host, as the CPU fix; then, on one rank, on the device
+template <class DeviceType> void FixShearStressKokkos<DeviceType>::setup(int vflag)
+{
+  FixShearStress::setup(vflag);
+  on_device = comm->nprocs == 1;
+  if (!on_device) return;
+  porewater::PlateOnDevice fresh{};
+  fresh.plate = plate->state();
+  fresh.verdict = porewater::PLATE_MOVING;
+  state.push(fresh);
+  host_current = true;
+}
+
+template <class DeviceType> void FixShearStressKokkos<DeviceType>::pull()
+{
+  const porewater::PlateOnDevice &s = state.pull();
+  plate->set_state(s.plate);
+  host_current = true;
+  if (s.verdict != porewater::PLATE_MOVING)
+    plate->stop_for(*this, porewater::PlateStepResult{s.verdict, s.verdict_value},
+                    porewater::PlateStep{s.verdict_step, update->dt, false});
+}
+
+// the kernels run over every grain with its mask tested: no list of the layer's grains;
+// re-neighboring waits for the device anyway: a plate that ran away stops the run here
+template <class DeviceType> void FixShearStressKokkos<DeviceType>::pre_neighbor()
+{
+  if (on_device && !host_current) pull();
+}
+
+template <class DeviceType> void FixShearStressKokkos<DeviceType>::post_force(int vflag)
+{
+  if (!on_device) {
+    FixShearStress::post_force(vflag);
+    return;
+  }
+  atomKK->sync(execution_space, X_MASK | F_MASK | RMASS_MASK | IMAGE_MASK | MASK_MASK);
+  const Grains<DeviceType> grains(atomKK);
+  porewater::kokkos_sum_over_grains_on_device<DeviceType>(
+      "shear/stress:step", atom->nlocal,
+      PlateSumsThenStep<DeviceType>{{grains, groupbit, image_unwrap()}, state.device,
+                                    area(), plate->settings().tau, plate->settings().mass,
+                                    force_to_velocity(), 0.5 * neighbor_skin(), update->ntimestep},
+      d_totals);
+  atomKK->sync(execution_space, V_MASK | OMEGA_MASK | TORQUE_MASK);
+  porewater::kokkos_for_each_grain<DeviceType>(
+      atom->nlocal, PlateMotionOnDevice<DeviceType>{grains, groupbit, state.device});
+  atomKK->modified(execution_space, V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK);
+  host_current = false;
+}
+
+template <class DeviceType> void FixShearStressKokkos<DeviceType>::post_run()
+{
+  if (on_device && !host_current) pull();
+  on_device = false;    // until the next setup: the host's plate is the plate
+}
+
+template <class DeviceType> double FixShearStressKokkos<DeviceType>::compute_vector(int n)
+{
+  if (on_device && !host_current) pull();
+  return FixShearStress::compute_vector(n);
+}
+
+template <class DeviceType> void FixShearStressKokkos<DeviceType>::write_restart(FILE *fp)
+{
+  if (on_device && !host_current) pull();
+  FixShearStress::write_restart(fp);
+}
+
 template <class DeviceType> void FixShearStressKokkos<DeviceType>::plate_sums(double *sums)
 {
   atomKK->sync(execution_space, X_MASK | F_MASK | RMASS_MASK | IMAGE_MASK | MASK_MASK);
   porewater::kokkos_sum_over_grains<DeviceType>(
       atom->nlocal,
-      porewater::PlateSums<porewater::KokkosGrains<DeviceType>>{
-          porewater::KokkosGrains<DeviceType>(atomKK), groupbit, image_unwrap()},
+      porewater::PlateSums<Grains<DeviceType>>{Grains<DeviceType>(atomKK), groupbit, image_unwrap()},
       sums);
 }
 
@@ -37,9 +147,7 @@ template <class DeviceType> void FixShearStressKokkos<DeviceType>::momentum_sums
   atomKK->sync(execution_space, V_MASK | RMASS_MASK | MASK_MASK);
   porewater::kokkos_sum_over_grains<DeviceType>(
       atom->nlocal,
-      porewater::PlateMomentum<porewater::KokkosGrains<DeviceType>>{
-          porewater::KokkosGrains<DeviceType>(atomKK), groupbit},
-      sums);
+      porewater::PlateMomentum<Grains<DeviceType>>{Grains<DeviceType>(atomKK), groupbit}, sums);
 }
 
 template <class DeviceType>
@@ -47,8 +155,8 @@ void FixShearStressKokkos<DeviceType>::move_as_plate(double force_per_mass)
 {
   atomKK->sync(execution_space, V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | RMASS_MASK | MASK_MASK);
   porewater::kokkos_for_each_grain<DeviceType>(
-      atom->nlocal, porewater::PlateMotion<porewater::KokkosGrains<DeviceType>>{
-                        porewater::KokkosGrains<DeviceType>(atomKK), groupbit, force_per_mass});
+      atom->nlocal, porewater::PlateMotion<Grains<DeviceType>>{Grains<DeviceType>(atomKK), groupbit,
+                                                               force_per_mass});
   atomKK->modified(execution_space, V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK);
 }
 
@@ -56,8 +164,8 @@ template <class DeviceType> void FixShearStressKokkos<DeviceType>::set_velocity_
 {
   atomKK->sync(execution_space, V_MASK | MASK_MASK);
   porewater::kokkos_for_each_grain<DeviceType>(
-      atom->nlocal, porewater::PlateVelocity<porewater::KokkosGrains<DeviceType>>{
-                        porewater::KokkosGrains<DeviceType>(atomKK), groupbit, velocity});
+      atom->nlocal, porewater::PlateVelocity<Grains<DeviceType>>{Grains<DeviceType>(atomKK), groupbit,
+                                                                 velocity});
   atomKK->modified(execution_space, V_MASK);
 }
 
