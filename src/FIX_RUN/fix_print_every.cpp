@@ -34,6 +34,9 @@ FixPrintEvery::FixPrintEvery(LAMMPS *lmp, int narg, char **arg) :
   const porewater::PrintEverySettings settings = porewater::parse_or_stop(
       lmp, "fix print/every", narg - 3, arg + 3, porewater::parse_print_every);
   nevery = settings.every;    // LAMMPS calls end_of_step on the multiples of N only
+  // with KOKKOS the atom data come to the host for the line's variables, and go back to the
+  // device only if changed: the line changes none
+  datamask_modify = 0;
   screen = settings.screen;
   text = utils::strdup(settings.text);
   maxcopy = maxwork = (int) settings.text.size() + 1;

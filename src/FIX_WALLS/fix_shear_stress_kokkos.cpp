@@ -15,47 +15,14 @@
 using namespace LAMMPS_NS;
 
 namespace {
-
 template <class DeviceType> using Grains = porewater::KokkosGrains<DeviceType>;
-
-// The layer's sums and, once on the device with their totals, the plate's step
-template <class DeviceType> struct PlateSumsThenStep {
-  static constexpr int count = porewater::PlateSums<Grains<DeviceType>>::count;
-  porewater::PlateSums<Grains<DeviceType>> body;
-  Kokkos::View<porewater::PlateOnDevice, DeviceType> state;
-  double area, tau, mass, force_to_velocity, bound;
-  long long step;
-  KOKKOS_INLINE_FUNCTION void operator()(const int i, double *sums) const { body(i, sums); }
-  KOKKOS_INLINE_FUNCTION void final(double *sums) const
-  {
-    porewater::PlateOnDevice &s = state();
-    const porewater::PlateStepResult r = porewater::plate_post_force(
-        s.plate, sums, false, area, tau, mass, force_to_velocity, bound);
-    if (r.verdict != porewater::PLATE_MOVING && s.verdict == porewater::PLATE_MOVING) {
-      s.verdict = r.verdict;
-      s.verdict_step = step;
-      s.verdict_value = r.value;
-    }
-  }
-};
-
-// every grain of the layer its share of the plate's force, as the step above left it
-template <class DeviceType> struct PlateMotionOnDevice {
-  Grains<DeviceType> grains;
-  int groupbit;
-  Kokkos::View<porewater::PlateOnDevice, DeviceType> state;
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
-  {
-    porewater::PlateMotion<Grains<DeviceType>>{grains, groupbit, state().plate.force_per_mass}(i);
-  }
-};
-
 }    // namespace
 
 template <class DeviceType>
 FixShearStressKokkos<DeviceType>::FixShearStressKokkos(LAMMPS *lmp, int narg, char **arg) :
-    FixShearStress(lmp, narg, arg), on_device(false), host_current(true),
-    state("shear/stress:state"), d_totals("shear/stress:totals", PlateSumsThenStep<DeviceType>::count)
+    FixShearStress(lmp, narg, arg), on_device(false), host_current(true), summed_in_pass(false),
+    motion_in_final(false),
+    state("shear/stress:state"), d_totals("shear/stress:totals", porewater::KokkosPlateSumsThenStep<DeviceType>::count)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
@@ -68,6 +35,7 @@ FixShearStressKokkos<DeviceType>::FixShearStressKokkos(LAMMPS *lmp, int narg, ch
 template <class DeviceType> void FixShearStressKokkos<DeviceType>::setup(int vflag)
 {
   FixShearStress::setup(vflag);
+  motion_in_final = false;    // until fix nve/sphere/bed/kk takes it, at the first step
   on_device = comm->nprocs == 1;
   if (!on_device) return;
   porewater::PlateOnDevice fresh{};
@@ -100,19 +68,33 @@ template <class DeviceType> void FixShearStressKokkos<DeviceType>::post_force(in
     FixShearStress::post_force(vflag);
     return;
   }
-  atomKK->sync(execution_space, X_MASK | F_MASK | RMASS_MASK | IMAGE_MASK | MASK_MASK);
-  const Grains<DeviceType> grains(atomKK);
-  porewater::kokkos_sum_over_grains_on_device<DeviceType>(
-      "shear/stress:step", atom->nlocal,
-      PlateSumsThenStep<DeviceType>{{grains, groupbit, image_unwrap()}, state.device,
-                                    area(), plate->settings().tau, plate->settings().mass,
-                                    force_to_velocity(), 0.5 * neighbor_skin(), update->ntimestep},
-      d_totals);
-  atomKK->sync(execution_space, V_MASK | OMEGA_MASK | TORQUE_MASK);
-  porewater::kokkos_for_each_grain<DeviceType>(
-      atom->nlocal, PlateMotionOnDevice<DeviceType>{grains, groupbit, state.device});
-  atomKK->modified(execution_space, V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK);
+  if (!summed_in_pass) {
+    atomKK->sync(execution_space, X_MASK | F_MASK | RMASS_MASK | IMAGE_MASK | MASK_MASK);
+    porewater::kokkos_sum_over_grains_on_device<DeviceType>("shear/stress:step", atom->nlocal,
+                                                            sums_kernel(), d_totals);
+  }
+  summed_in_pass = false;
+  if (!motion_in_final) {
+    atomKK->sync(execution_space, V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | RMASS_MASK | MASK_MASK);
+    porewater::kokkos_for_each_grain<DeviceType>(atom->nlocal, motion_kernel());
+    atomKK->modified(execution_space, V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK);
+  }
   host_current = false;
+}
+
+template <class DeviceType>
+porewater::KokkosPlateSumsThenStep<DeviceType> FixShearStressKokkos<DeviceType>::sums_kernel()
+{
+  return porewater::KokkosPlateSumsThenStep<DeviceType>{
+      {Grains<DeviceType>(atomKK), groupbit, image_unwrap()}, state.device, area(),
+      plate->settings().tau, plate->settings().mass, force_to_velocity(), 0.5 * neighbor_skin(),
+      update->ntimestep};
+}
+
+template <class DeviceType>
+porewater::KokkosPlateMotion<DeviceType> FixShearStressKokkos<DeviceType>::motion_kernel()
+{
+  return porewater::KokkosPlateMotion<DeviceType>{Grains<DeviceType>(atomKK), groupbit, state.device};
 }
 
 template <class DeviceType> void FixShearStressKokkos<DeviceType>::post_run()

@@ -11,8 +11,6 @@
 
 #include "fix_wall_stress_kokkos.h"
 
-#include "walls/wall_contact.h"
-
 #include "atom_kokkos.h"
 #include "atom_masks.h"
 #include "comm.h"
@@ -20,62 +18,10 @@
 
 using namespace LAMMPS_NS;
 
-namespace {
-
-struct NoPerAtomVirial {    // the KOKKOS fix keeps the global virial only
-  KOKKOS_INLINE_FUNCTION void operator()(int, double) const {}
-};
-
-// The wall's step on the device: its motion to this step, the contacts with it, its force
-template <class DeviceType> struct WallStep {
-  static constexpr int count = 4;    // WallContacts' sums
-  porewater::KokkosGrains<DeviceType> grains;
-  Kokkos::View<porewater::WallOnDevice, DeviceType> state;
-  int groupbit;
-  double kn, damping, mass, plate_damping;
-  int damping_velocity;
-  double dt, stress;
-  porewater::WallBox box;
-  long long step;
-  bool final_kick_due;    // the last step's final_integrate
-
-  // where initial_integrate puts the wall: every grain and the final compute the same
-  KOKKOS_INLINE_FUNCTION porewater::WallState moved() const
-  {
-    porewater::WallState w = state().wall;
-    if (final_kick_due) porewater::wall_kick(w, dt, mass);
-    porewater::wall_initial_integrate(w, dt, mass);
-    return w;
-  }
-  KOKKOS_INLINE_FUNCTION void operator()(const int i, double *sums) const
-  {
-    const porewater::WallState w = moved();
-    porewater::WallContacts<porewater::KokkosGrains<DeviceType>, NoPerAtomVirial>{
-        grains, NoPerAtomVirial(), groupbit, w.z, w.v, kn, damping, damping_velocity}(i, sums);
-  }
-  KOKKOS_INLINE_FUNCTION void final(double *sums) const
-  {
-    porewater::WallOnDevice &s = state();
-    porewater::WallState w = moved();
-    porewater::wall_post_force(w, sums[0], sums[1], sums[3], stress, box.area, plate_damping);
-    s.wall = w;
-    s.virial_zz = sums[2];
-    const int verdict = porewater::wall_verdict(w, box);
-    if (verdict != porewater::WALL_IN_BOX && s.verdict == porewater::WALL_IN_BOX) {
-      s.verdict = verdict;
-      s.verdict_step = step;
-      s.at_verdict = w;
-      s.box_at_verdict = box;
-    }
-  }
-};
-
-}    // namespace
-
 template <class DeviceType>
 FixWallStressKokkos<DeviceType>::FixWallStressKokkos(LAMMPS *lmp, int narg, char **arg) :
     FixWallStress(lmp, narg, arg), on_device(false), half_step(false), step_done(false),
-    host_current(true), state("wall/stress:state"), d_totals("wall/stress:totals", WallStep<DeviceType>::count)
+    host_current(true), stepped_in_pass(false), state("wall/stress:state"), d_totals("wall/stress:totals", porewater::KokkosWallStep<DeviceType>::count)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
@@ -130,15 +76,13 @@ template <class DeviceType> void FixWallStressKokkos<DeviceType>::post_force(int
     return;
   }
   v_init(vflag);
-  const porewater::WallStressSettings &s = wall->settings();
-  atomKK->sync(execution_space, X_MASK | V_MASK | F_MASK | RADIUS_MASK | MASK_MASK);
-  porewater::kokkos_sum_over_grains_on_device<DeviceType>(
-      "wall/stress:step", atom->nlocal,
-      WallStep<DeviceType>{porewater::KokkosGrains<DeviceType>(atomKK), state.device, groupbit,
-                           s.kn, s.damping, s.mass, s.plate_damping, s.damping_velocity,
-                           update->dt, stress_now(), box(), update->ntimestep, half_step},
-      d_totals);
-  atomKK->modified(execution_space, F_MASK);
+  if (!stepped_in_pass) {
+    atomKK->sync(execution_space, X_MASK | V_MASK | F_MASK | RADIUS_MASK | MASK_MASK);
+    porewater::kokkos_sum_over_grains_on_device<DeviceType>("wall/stress:step", atom->nlocal,
+                                                            step_kernel(), d_totals);
+    atomKK->modified(execution_space, F_MASK);
+  }
+  stepped_in_pass = false;
   half_step = true;
   step_done = false;
   host_current = false;
@@ -146,6 +90,16 @@ template <class DeviceType> void FixWallStressKokkos<DeviceType>::post_force(int
     pull();
     virial[2] += state.host().virial_zz;
   }
+}
+
+template <class DeviceType>
+porewater::KokkosWallStep<DeviceType> FixWallStressKokkos<DeviceType>::step_kernel()
+{
+  const porewater::WallStressSettings &s = wall->settings();
+  return porewater::KokkosWallStep<DeviceType>{
+      porewater::KokkosGrains<DeviceType>(atomKK), state.device, groupbit, s.kn, s.damping, s.mass,
+      s.plate_damping, s.damping_velocity, update->dt, stress_now(), box(), update->ntimestep,
+      half_step};
 }
 
 template <class DeviceType> void FixWallStressKokkos<DeviceType>::final_integrate()
@@ -194,7 +148,8 @@ template <class DeviceType> void FixWallStressKokkos<DeviceType>::grain_contacts
   atomKK->sync(execution_space, X_MASK | V_MASK | F_MASK | RADIUS_MASK | MASK_MASK);
   porewater::kokkos_sum_over_grains<DeviceType>(
       atom->nlocal,
-      wall->contacts(porewater::KokkosGrains<DeviceType>(atomKK), NoPerAtomVirial(), groupbit),
+      wall->contacts(porewater::KokkosGrains<DeviceType>(atomKK), porewater::KokkosNoPerAtomVirial(),
+                     groupbit),
       sums);
   atomKK->modified(execution_space, F_MASK);
 }

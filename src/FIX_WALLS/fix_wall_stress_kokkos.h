@@ -24,6 +24,55 @@ struct WallOnDevice {
   WallState at_verdict;
   WallBox box_at_verdict;
 };
+
+struct KokkosNoPerAtomVirial {    // the KOKKOS fix keeps the global virial only
+  KOKKOS_INLINE_FUNCTION void operator()(int, double) const {}
+};
+
+// The wall's step on the device, a body of kokkos_sum_over_grains_on_device: its motion to
+// this step, the contacts with it, then (final, once) its force and its box check
+template <class DeviceType> struct KokkosWallStep {
+  static constexpr int count = 4;    // WallContacts' sums
+  KokkosGrains<DeviceType> grains;
+  Kokkos::View<WallOnDevice, DeviceType> state;
+  int groupbit;
+  double kn, damping, mass, plate_damping;
+  int damping_velocity;
+  double dt, stress;
+  WallBox box;
+  long long step;
+  bool final_kick_due;    // the last step's final_integrate
+
+  // where initial_integrate puts the wall: every grain and the final compute the same
+  KOKKOS_INLINE_FUNCTION WallState moved() const
+  {
+    WallState w = state().wall;
+    if (final_kick_due) wall_kick(w, dt, mass);
+    wall_initial_integrate(w, dt, mass);
+    return w;
+  }
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, double *sums) const
+  {
+    const WallState w = moved();
+    WallContacts<KokkosGrains<DeviceType>, KokkosNoPerAtomVirial>{
+        grains, KokkosNoPerAtomVirial(), groupbit, w.z, w.v, kn, damping, damping_velocity}(i, sums);
+  }
+  KOKKOS_INLINE_FUNCTION void final(double *sums) const
+  {
+    WallOnDevice &s = state();
+    WallState w = moved();
+    wall_post_force(w, sums[0], sums[1], sums[3], stress, box.area, plate_damping);
+    s.wall = w;
+    s.virial_zz = sums[2];
+    const int verdict = wall_verdict(w, box);
+    if (verdict != WALL_IN_BOX && s.verdict == WALL_IN_BOX) {
+      s.verdict = verdict;
+      s.verdict_step = step;
+      s.at_verdict = w;
+      s.box_at_verdict = box;
+    }
+  }
+};
 }    // namespace porewater
 
 namespace LAMMPS_NS {
@@ -42,6 +91,12 @@ template <class DeviceType> class FixWallStressKokkos : public FixWallStress {
   void *extract(const char *, int &) override;
   void write_restart(FILE *) override;
 
+  // fix nve/sphere/bed/kk's post_force pass: while the wall steps on the device, its
+  // kernel body of this step may run in that pass, which then says so
+  bool steps_on_device() const { return on_device; }
+  porewater::KokkosWallStep<DeviceType> step_kernel();
+  void stepped_in_the_pass() { stepped_in_pass = true; }
+
  protected:
   void grain_contacts(double *sums) override;
 
@@ -50,6 +105,7 @@ template <class DeviceType> class FixWallStressKokkos : public FixWallStress {
   bool half_step;       // the device's velocity is the half-step one; its final kick is due
   bool step_done;       // final_integrate has passed since: the host sees the final kick
   bool host_current;    // the host's wall is the device's
+  bool stepped_in_pass;    // this step's kernel ran in fix nve/sphere/bed/kk's pass
   porewater::DeviceState<porewater::WallOnDevice, DeviceType> state;
   Kokkos::View<double *, DeviceType> d_totals;    // the kernel's sums (read by its final)
   void pull();    // the device's wall to the host's, its final kick applied when past; checks

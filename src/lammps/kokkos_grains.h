@@ -22,6 +22,7 @@ template <class DeviceType> struct KokkosGrains {
   typename AT::t_int_1d masks;
   typename AT::t_imageint_1d images;
 
+  KokkosGrains() = default;    // no grains: a kernel's part that does not run
   explicit KokkosGrains(LAMMPS_NS::AtomKokkos *atomKK) :
       xs(atomKK->k_x.view<DeviceType>()), vs(atomKK->k_v.view<DeviceType>()),
       omegas(atomKK->k_omega.view<DeviceType>()), fs(atomKK->k_f.view<DeviceType>()),
