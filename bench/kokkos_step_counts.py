@@ -65,17 +65,35 @@ def count(work, variables, name):
         subprocess.run(["lmp", "-k", "on", "t", "1", "-sf", "kk", "-in", "in.tidal_shear",
                         "-var", "run_steps", str(steps), "-screen", "none", "-log",
                         "log_%d.lammps" % steps] + extra, cwd=d, env=env, check=True)
-        runs.append((read_totals(kcount), read_lines(kcount), read_lines(ksync)))
-    span = float(STEPS[1] - STEPS[0])
+        runs.append(read_run(kcount, ksync))
+    return per_step(runs, STEPS)
 
-    def per_step(a, b):
+
+def read_run(kcount, ksync):
+    """a run's hook files: (totals, per kernel, per atom sync) (no KSYNC_OUT file: none)"""
+    return (read_totals(kcount), read_lines(kcount), read_lines(ksync) if os.path.exists(ksync) else {})
+
+
+def per_step(runs, steps):
+    """the counts per step: the difference of the runs of steps[0] and steps[1] steps"""
+    span = float(steps[1] - steps[0])
+
+    def difference(a, b):
         keys = set(a) | set(b)
         return {k: (b.get(k, 0) - a.get(k, 0)) / span for k in keys if b.get(k, 0) != a.get(k, 0)}
 
-    totals = per_step(runs[0][0], runs[1][0])
-    return {"totals": totals, "kernels": per_step(runs[0][1], runs[1][1]),
-            "atom": per_step(runs[0][2], runs[1][2]),
+    totals = difference(runs[0][0], runs[1][0])
+    return {"totals": totals, "kernels": difference(runs[0][1], runs[1][1]),
+            "atom": difference(runs[0][2], runs[1][2]),
             "dispatches": sum(totals.get(k, 0) for k in ("for", "reduce", "scan"))}
+
+
+def print_and_append(text, markdown):
+    """the tables to the screen and, given a file, appended to it"""
+    print(text)
+    if markdown:
+        with open(markdown, "a") as f:
+            f.write(text + "\n")
 
 
 def host_syncs(atom):
@@ -116,10 +134,7 @@ def main():
     c = count(os.path.abspath(args.work), variables, name)
     text = markdown(args.label or "reduced example, -sf kk, %s" % (
         " ".join("-var %s %s" % kv for kv in variables.items()) or "defaults"), c)
-    print(text)
-    if args.markdown:
-        with open(args.markdown, "a") as f:
-            f.write(text + "\n")
+    print_and_append(text, args.markdown)
 
 
 if __name__ == "__main__":

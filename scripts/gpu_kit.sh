@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The GPU kit: the 29Sep2021 host built for one NVIDIA GPU (KOKKOS CUDA + Serial, no MPI: the
 # lent machine has no Open MPI of ours) with the plugin, stripped and packed into gpu_kit/
-# (ignored by git) for bench/gpu_check.sh to run on a lent device machine.
+# (ignored by git) for bench/gpu_check.py to run on a lent device machine.
 #   scripts/gpu_kit.sh     ~40 min on 2 cores cold (the whole Kokkos-CUDA tree), then seconds
 # PW_CUDA_ARCH (default HOPPER90: sm_90, the H100 and H200, by scripts/patches/
 # kokkos-hopper90.patch) picks the Kokkos_ARCH_<...>. Kokkos 3.4 refuses at start to run code
