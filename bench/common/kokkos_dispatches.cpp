@@ -4,7 +4,11 @@
 // (bench/gpu/gpu_check.py). To time a kernel alone it waits for the device before and after
 // it (cuCtxSynchronize from the driver already loaded, when there is one): the run is
 // slower, its shares are the kernels'.
+// Preloaded as well (LD_PRELOAD=this.so), it counts LAMMPS' AtomKokkos::sync and ::modified
+// calls by caller, space and mask into $KSYNC_OUT: on a host backend, where every space is
+// the host and no copy happens, the calls that would move atom arrays on a GPU.
 //   g++ -O2 -shared -fPIC -o kokkos_dispatches.so kokkos_dispatches.cpp -ldl
+#include <cxxabi.h>
 #include <dlfcn.h>
 #include <chrono>
 #include <cstdint>
@@ -77,8 +81,53 @@ extern "C" void kokkosp_init_library(int, uint64_t, uint32_t, void *)
 {
   timing = getenv("KTIMES_OUT") != nullptr;
 }
+namespace {
+std::map<std::string, long> atom_calls;    // "sync|modified SPACE MASK CALLER"
+
+// the function that called from `address` (demangled, its arguments dropped)
+std::string caller_of(void *address)
+{
+  Dl_info info;
+  if (!dladdr(address, &info) || !info.dli_sname) return "?";
+  int status = 0;
+  char *name = abi::__cxa_demangle(info.dli_sname, nullptr, nullptr, &status);
+  std::string text = status == 0 && name ? name : info.dli_sname;
+  free(name);
+  return text.substr(0, text.find('('));
+}
+
+void count_atom_call(const char *what, int space, unsigned mask, void *caller)
+{
+  static const char *spaces[] = {"Host", "Device"};
+  char head[64];
+  snprintf(head, sizeof(head), "%s %s 0x%x ", what, space == 0 || space == 1 ? spaces[space] : "?", mask);
+  ++atom_calls[head + caller_of(caller)];
+}
+}    // namespace
+
+// LAMMPS_NS::AtomKokkos::sync(ExecutionSpace, unsigned) and ::modified, forwarded
+extern "C" void _ZN9LAMMPS_NS10AtomKokkos4syncENS_14ExecutionSpaceEj(void *self, int space, unsigned mask)
+{
+  static auto next = reinterpret_cast<void (*)(void *, int, unsigned)>(
+      dlsym(RTLD_NEXT, "_ZN9LAMMPS_NS10AtomKokkos4syncENS_14ExecutionSpaceEj"));
+  count_atom_call("sync", space, mask, __builtin_return_address(0));
+  next(self, space, mask);
+}
+extern "C" void _ZN9LAMMPS_NS10AtomKokkos8modifiedENS_14ExecutionSpaceEj(void *self, int space, unsigned mask)
+{
+  static auto next = reinterpret_cast<void (*)(void *, int, unsigned)>(
+      dlsym(RTLD_NEXT, "_ZN9LAMMPS_NS10AtomKokkos8modifiedENS_14ExecutionSpaceEj"));
+  count_atom_call("modified", space, mask, __builtin_return_address(0));
+  next(self, space, mask);
+}
+
 extern "C" void kokkosp_finalize_library()
 {
+  if (getenv("KSYNC_OUT") && !atom_calls.empty()) {
+    FILE *a = fopen(getenv("KSYNC_OUT"), "w");
+    for (auto &kv : atom_calls) fprintf(a, "%ld %s\n", kv.second, kv.first.c_str());
+    fclose(a);
+  }
   FILE *f = fopen(getenv("KCOUNT_OUT") ? getenv("KCOUNT_OUT") : "kcount.txt", "w");
   fprintf(f, "for %ld reduce %ld scan %ld deep_copy %ld fence %ld\n", nfor, nreduce, nscan, ncopy, nfence);
   for (auto &kv : counts) fprintf(f, "%ld %s\n", kv.second, kv.first.c_str());

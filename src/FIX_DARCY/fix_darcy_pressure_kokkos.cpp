@@ -47,10 +47,7 @@ template <class DeviceType> struct Stencils {
   KOKKOS_INLINE_FUNCTION double *weights(int i) const { return &weight_rows(i, 0); }
 };
 
-template <class DeviceType> struct Held {
-  typename ArrayTypes<DeviceType>::t_ffloat_2d rows;
-  KOKKOS_INLINE_FUNCTION double &operator()(int i, int d) const { return rows(i, d); }
-};
+template <class DeviceType> using Held = porewater::KokkosHeldRows<DeviceType>;
 
 // the `add` of porewater::deposit_grain over a ScatterView access
 template <class Access> struct ScatterAdd {
@@ -90,15 +87,6 @@ template <class DeviceType> struct ForceKernel {
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
     porewater::apply_fluid_force(grid, field, grains, stencils, held, groupbit, kept, i);
-  }
-};
-
-template <class DeviceType> struct HeldForceKernel {
-  porewater::KokkosGrains<DeviceType> grains;
-  Held<DeviceType> held;
-  KOKKOS_INLINE_FUNCTION void operator()(const int i) const
-  {
-    porewater::add_held_fluid_force(grains, held, i);
   }
 };
 
@@ -164,11 +152,13 @@ class FixDarcyPressureKokkos<DeviceType>::Grains final : public porewater::Grain
 
   void add_held_force() override
   {
+    if (fix->held_in_pass) {    // fix nve/sphere/bed/kk's pass has added it
+      fix->held_in_pass = false;
+      return;
+    }
     atomKK->sync(execution(), F_MASK);
-    fix->k_fluid_force.template sync<DeviceType>();
     Kokkos::parallel_for("darcy/pressure:held force",
-                         Kokkos::RangePolicy<DeviceType>(0, fix->atom->nlocal),
-                         HeldForceKernel<DeviceType>{porewater::KokkosGrains<DeviceType>(atomKK), held()});
+                         Kokkos::RangePolicy<DeviceType>(0, fix->atom->nlocal), fix->held_kernel());
     atomKK->modified(execution(), F_MASK);
   }
 
@@ -201,7 +191,7 @@ class FixDarcyPressureKokkos<DeviceType>::Grains final : public porewater::Grain
 
 template <class DeviceType>
 FixDarcyPressureKokkos<DeviceType>::FixDarcyPressureKokkos(LAMMPS *lmp, int narg, char **arg) :
-    FixDarcyPressure(lmp, narg, arg), kernels(nullptr)
+    FixDarcyPressure(lmp, narg, arg), held_in_pass(false), kernels(nullptr)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
@@ -230,7 +220,22 @@ template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::setup(int v
 template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::post_force(int vflag)
 {
   FixDarcyPressure::post_force(vflag);
+  held_in_pass = false;
   if (update->ntimestep == output->next) k_fluid_force.template sync<LMPHostType>();
+}
+
+template <class DeviceType> bool FixDarcyPressureKokkos<DeviceType>::only_holds_force_now()
+{
+  return fluid->only_holds_force(*this, update->ntimestep);
+}
+
+template <class DeviceType>
+porewater::KokkosHeldForce<DeviceType> FixDarcyPressureKokkos<DeviceType>::held_kernel()
+{
+  if (atom->nmax > maxatom) grow_fluid_force(atom->nmax);
+  k_fluid_force.template sync<DeviceType>();
+  return porewater::KokkosHeldForce<DeviceType>{porewater::KokkosGrains<DeviceType>(atomKK),
+                                                {k_fluid_force.template view<DeviceType>()}};
 }
 
 template <class DeviceType> porewater::GrainBackend &FixDarcyPressureKokkos<DeviceType>::grains()

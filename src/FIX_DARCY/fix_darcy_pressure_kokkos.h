@@ -7,8 +7,24 @@
 #ifndef PW_FIX_DARCY_PRESSURE_KOKKOS_H
 #define PW_FIX_DARCY_PRESSURE_KOKKOS_H
 
+#include "darcy/coupling.h"
 #include "fix_darcy_pressure.h"
+#include "kokkos_grains.h"
 #include "kokkos_type.h"
+
+namespace porewater {
+// the per-atom held fluid force, rows of 3
+template <class DeviceType> struct KokkosHeldRows {
+  typename ArrayTypes<DeviceType>::t_ffloat_2d rows;
+  KOKKOS_INLINE_FUNCTION double &operator()(int i, int d) const { return rows(i, d); }
+};
+// every grain its held fluid force (between fluid steps, `interpolate fluid`)
+template <class DeviceType> struct KokkosHeldForce {
+  KokkosGrains<DeviceType> grains;
+  KokkosHeldRows<DeviceType> held;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const { add_held_fluid_force(grains, held, i); }
+};
+}    // namespace porewater
 
 namespace LAMMPS_NS {
 
@@ -20,6 +36,12 @@ template <class DeviceType> class FixDarcyPressureKokkos : public FixDarcyPressu
   void post_force(int) override;
   class Grains;    // the GrainBackend of the kernels
 
+  // fix nve/sphere/bed/kk's post_force pass: on a step whose post_force only adds the held
+  // fluid force, that per-grain work may run in the pass, which then says so
+  bool only_holds_force_now();
+  porewater::KokkosHeldForce<DeviceType> held_kernel();
+  void held_in_the_pass() { held_in_pass = true; }
+
  protected:
   porewater::GrainBackend &grains() override;
   void grow_fluid_force(int nmax) override;
@@ -27,6 +49,7 @@ template <class DeviceType> class FixDarcyPressureKokkos : public FixDarcyPressu
   void sync_for_nonfinite_check() override;
 
  private:
+  bool held_in_pass;    // this step's held force was added in fix nve/sphere/bed/kk's pass
   Grains *kernels;
   DAT::tdual_ffloat_2d k_fluid_force;    // `fluid_force` is its host view
 };

@@ -23,6 +23,7 @@
 #include "neigh_list_kokkos.h"
 #include "neigh_request.h"
 #include "neighbor.h"
+#include "output.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -119,7 +120,8 @@ template <class DeviceType, int NEIGHFLAG, int EVFLAG, int UPDATE_HISTORY> struc
   Scatter f, torque;
   typename AT::t_efloat_1d eatom;
   typename AT::t_virial_array vatom;
-  typename Kokkos::DualView<tagint[2], DeviceType>::t_dev broken_tags;
+  Kokkos::View<porewater::BrokenContact, DeviceType> broken;
+  bigint step;
   porewater::ContactStep contact;
   ContactCoeffs uniform;    // the coefficients of every type pair, if is_uniform
   double limit;
@@ -235,8 +237,10 @@ template <class DeviceType, int NEIGHFLAG, int EVFLAG, int UPDATE_HISTORY> struc
     // the first broken contact found is the one the message names
     KOKKOS_INLINE_FUNCTION void broken(int i, int j, double) const
     {
-      if (Kokkos::atomic_compare_exchange(&k.broken_tags(0), tagint(0), k.tag[i]) == 0)
-        k.broken_tags(1) = k.tag[j];
+      if (Kokkos::atomic_compare_exchange(&k.broken().i, tagint(0), k.tag[i]) == 0) {
+        k.broken().j = k.tag[j];
+        k.broken().step = k.step;
+      }
     }
     KOKKOS_INLINE_FUNCTION bool tracks_dissipation() const { return EVFLAG && k.tracking; }
     KOKKOS_INLINE_FUNCTION void add_loss(PairTally &sums, double energy) const
@@ -331,7 +335,7 @@ void run_sweep(const Kernel &kernel, const int inum, PairTally &sums, const bool
 
 template <class DeviceType>
 PairLinearCoulombKokkos<DeviceType>::PairLinearCoulombKokkos(LAMMPS *lmp) :
-    PairLinearCoulomb(lmp), fix_historyKK(nullptr)
+    PairLinearCoulomb(lmp), broken("pair:broken"), fix_historyKK(nullptr)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
@@ -416,7 +420,6 @@ template <class DeviceType> void PairLinearCoulombKokkos<DeviceType>::compute(in
   k_coeffs.template sync<DeviceType>();
   fix_historyKK->k_firstflag.template sync<DeviceType>();
   fix_historyKK->k_firstvalue.template sync<DeviceType>();
-  if (!k_broken.d_view.data()) k_broken = Kokkos::DualView<tagint[2], DeviceType>("pair:broken");
 
   const bool tally = eflag_in || vflag_in || style.dissipation;
   const bool update_history = !update->setupflag;
@@ -439,15 +442,17 @@ template <class DeviceType> void PairLinearCoulombKokkos<DeviceType>::compute(in
   fix_historyKK->k_firstflag.template modify<DeviceType>();
   fix_historyKK->k_firstvalue.template modify<DeviceType>();
 
-  // a broken contact found in the kernel stops the run here, naming the grains
-  k_broken.template modify<DeviceType>();
-  k_broken.template sync<LMPHostType>();
-  if (k_broken.h_view(0) != 0)
-    error->one(FLERR,
-               "Pair linear/coulomb/kk: at step {} grains {} and {} overlap by more than "
-               "overlap_limit {} of the smaller radius (or not finite): the time step is too "
-               "large for kn, or the run has blown up",
-               update->ntimestep, k_broken.h_view(0), k_broken.h_view(1), style.overlap_limit);
+  // a broken contact found in the kernel stops the run at the next check, naming the
+  // grains and the step it was found at
+  if (checks_broken_now()) {
+    const porewater::BrokenContact &b = broken.pull();
+    if (b.i != 0)
+      error->one(FLERR,
+                 "Pair linear/coulomb/kk: at step {} grains {} and {} overlap by more than "
+                 "overlap_limit {} of the smaller radius (or not finite): the time step is too "
+                 "large for kn, or the run has blown up",
+                 b.step, b.i, b.j, style.overlap_limit);
+  }
 
   pvector[0] = dissipated;
   if (eflag_atom) {
@@ -486,7 +491,8 @@ void PairLinearCoulombKokkos<DeviceType>::launch()
       atomKK->k_torque.view<DeviceType>());
   if (eflag_atom) kernel.eatom = k_eatom.template view<DeviceType>();
   if (vflag_atom) kernel.vatom = k_vatom.template view<DeviceType>();
-  kernel.broken_tags = k_broken.template view<DeviceType>();
+  kernel.broken = broken.device;
+  kernel.step = update->ntimestep;
   kernel.contact = contact_step();
   kernel.is_uniform = coefficients_are_uniform() ? 1 : 0;
   kernel.uniform = porewater::contact_coeffs(kn_ij[1][1], kt_ij[1][1], mu_ij[1][1]);
@@ -512,6 +518,14 @@ void PairLinearCoulombKokkos<DeviceType>::launch()
   if (vflag_global)
     for (int n = 0; n < 6; n++) virial[n] += sums.virial[n];
   dissipated += sums.dissipated;
+}
+
+// The steps that wait for the device anyway, so that reading the flag costs no wait of its
+// own: a run's setup, re-neighboring, output and the run's last step
+template <class DeviceType> bool PairLinearCoulombKokkos<DeviceType>::checks_broken_now() const
+{
+  const bigint step = update->ntimestep;
+  return update->setupflag || neighbor->ago == 0 || step == output->next || step == update->laststep;
 }
 
 namespace LAMMPS_NS {

@@ -7,9 +7,18 @@
 #ifndef PW_PAIR_LINEAR_COULOMB_KOKKOS_H
 #define PW_PAIR_LINEAR_COULOMB_KOKKOS_H
 
+#include "kokkos_grains.h"
 #include "kokkos_type.h"
 #include "pair_kokkos.h"
 #include "pair_linear_coulomb.h"
+
+namespace porewater {
+// the first contact found deeper than the overlap limit: its grains' tags (0: none) and step
+struct BrokenContact {
+  LAMMPS_NS::tagint i, j;
+  LAMMPS_NS::bigint step;
+};
+}    // namespace porewater
 
 namespace LAMMPS_NS {
 
@@ -33,7 +42,9 @@ template <class DeviceType> class PairLinearCoulombKokkos : public PairLinearCou
   tdual_coeffs k_coeffs;    // per type pair, decided in init_one()
   DAT::tdual_efloat_1d k_eatom;
   DAT::tdual_virial_array k_vatom;
-  Kokkos::DualView<tagint[2], DeviceType> k_broken;    // tags of a broken contact, 0 if none
+  // found by the kernel on the device; read on the steps that wait for the device anyway
+  porewater::DeviceState<porewater::BrokenContact, DeviceType> broken;
+  bool checks_broken_now() const;
   FixNeighHistoryKokkos<DeviceType> *fix_historyKK;
 };
 

@@ -9,6 +9,8 @@
 #include "atom_kokkos.h"
 #include "kokkos_type.h"
 
+#include <string>
+
 namespace porewater {
 
 template <class DeviceType> struct KokkosGrains {
@@ -20,6 +22,7 @@ template <class DeviceType> struct KokkosGrains {
   typename AT::t_int_1d masks;
   typename AT::t_imageint_1d images;
 
+  KokkosGrains() = default;    // no grains: a kernel's part that does not run
   explicit KokkosGrains(LAMMPS_NS::AtomKokkos *atomKK) :
       xs(atomKK->k_x.view<DeviceType>()), vs(atomKK->k_v.view<DeviceType>()),
       omegas(atomKK->k_omega.view<DeviceType>()), fs(atomKK->k_f.view<DeviceType>()),
@@ -66,6 +69,52 @@ void kokkos_sum_over_grains(int n, const Body &body, double *sums)
   Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, n), SumOverGrains<Body>{Body::count, body},
                           sums);
 }
+
+// body(i, sums) for the grains [0, n), summing Body::count values, then body.final(sums)
+// once with their totals, on the device (a kernel named `name`): nothing comes back to the host and the host does
+// not wait (Kokkos' reduction into a device view). The range holds one item at least, so
+// that every backend calls final, also with no grains.
+template <class Body> struct SumOverGrainsOnDevice {
+  typedef double value_type[];
+  const unsigned value_count = Body::count;
+  Body body;
+  int n;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, value_type sums) const
+  {
+    if (i < n) body(i, sums);
+  }
+  KOKKOS_INLINE_FUNCTION void final(value_type sums) const { body.final(sums); }
+};
+
+template <class DeviceType, class Body>
+void kokkos_sum_over_grains_on_device(const char *name, int n, const Body &body,
+                                      const Kokkos::View<double *, DeviceType> &totals)
+{
+  Kokkos::parallel_reduce(name, Kokkos::RangePolicy<DeviceType>(0, n > 0 ? n : 1),
+                          SumOverGrainsOnDevice<Body>{Body::count, body, n}, totals);
+}
+
+// A small state of a /kk fix kept on the device between steps, with its host copy: the
+// device's kernels read and write it, the host reads it back where it needs it (outputs,
+// restart, the end of a run, its checks) and writes it at a run's setup.
+template <class State, class DeviceType> struct DeviceState {
+  Kokkos::View<State, DeviceType> device;
+  typename Kokkos::View<State, DeviceType>::HostMirror host;
+  explicit DeviceState(const char *label) :
+      device(std::string(label)), host(Kokkos::create_mirror_view(device))
+  {
+  }
+  State &pull()
+  {
+    Kokkos::deep_copy(host, device);
+    return host();
+  }
+  void push(const State &state)
+  {
+    host() = state;
+    Kokkos::deep_copy(device, host);
+  }
+};
 
 }    // namespace porewater
 

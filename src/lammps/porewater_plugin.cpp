@@ -13,6 +13,7 @@
 #include "compute_coordination_original.h"
 #include "compute_darcy_grain.h"
 #include "fix_darcy_pressure.h"
+#include "fix_print_every.h"
 #include "fix_progress.h"
 #include "fix_nve_sphere_bed.h"
 #include "fix_nve_sphere_ty3.h"
@@ -160,4 +161,6 @@ extern "C" void porewater_register_styles(void *lmp, void *handle, void *regfunc
       "coordination/original", "coordination number as the original program counts it");
   r.add_host_fix<FixProgress>(
       "progress", "progress of a long run, finish time, wall-time limit");
+  r.add_host_fix<FixPrintEvery>(
+      "print/every", "fix print every N steps, never at a run's setup");
 }

@@ -14,6 +14,7 @@
 #include <map>
 #include <vector>
 
+using pwtest::Accel;
 using pwtest::Lammps;
 
 namespace {
@@ -127,4 +128,53 @@ TEST(FixNVESphereBed, WithItsFloorMovesGrainsAsLammpsOwnFixesToRoundOff)
   EXPECT_LE(worst, 3.0 * spread);    // host_compare's rule: 3x the spread of round-off
   const Motion stiffer = settle(BED + std::string(" floor 0.0 2000.002\n"), STEPS);
   EXPECT_GT(pwtest::max_abs_diff(stiffer.x, native.x), 100.0 * spread);
+}
+
+namespace {
+
+// The loose bed under the package's other fixes, in the example's order: nve/sphere/bed,
+// a wall on top, the pore water (fluid steps every 5, the force held between), the top
+// layer sheared as a plate; `between` after the bed fix. Every grain's position and
+// velocity and the wall's and plate's vectors after two runs.
+std::vector<double> bed_under_every_fix(Accel accel, const std::string &between)
+{
+  Lammps l(accel);
+  l.commands(pwtest::loose_bed() +
+             "region high block INF INF INF INF 4.2 INF units box\ngroup top region high\n"
+             "fix grains all nve/sphere/bed held bottom gravity 1.0 bed floor 0.0 2000\n" +
+             between +
+             "fix w all wall/stress z auto stress 0.5 mass 25 kn 2000 damping 1\n"
+             "fix fl all darcy/pressure grid 2 2 4 zhi 8 viscosity 1 compressibility 0.01 "
+             "density 0.5 permeability 0.01 kmax 0.01 gravity 0 0 -1 every 5 interpolate fluid\n"
+             "fix s top shear/stress tau 0.2 mass 5\n");
+  l.command("run 150");
+  l.command("run 150");
+  std::vector<double> out;
+  for (const char *name : {"x", "v", "omega"})
+    for (const auto &kv : l.gather3(name)) out.insert(out.end(), kv.second.begin(), kv.second.end());
+  for (const char *q : {"f_w[1]", "f_w[2]", "f_w[3]", "f_s[1]", "f_s[2]", "f_s[3]", "f_fl[1]"})
+    out.push_back(l.equal(q));
+  return out;
+}
+
+}    // namespace
+
+// On one rank fix nve/sphere/bed/kk's post_force kernel also runs the grain work of the
+// wall, of the fluid between fluid steps and the plate's sums, and its final kernel moves
+// the plate's layer: the same as each fix's own kernels (a fix between them, adding
+// nothing, stops the pass), bit for bit; and as the CPU fixes to round-off.
+TEST(FixNVESphereBed, KokkosPassOfTheFixesAfterItEqualsTheirOwnKernels)
+{
+  PW_SKIP_WITHOUT_KOKKOS();
+  const std::vector<double> pass = bed_under_every_fix(Accel::kokkos, "");
+  const std::vector<double> own =
+      bed_under_every_fix(Accel::kokkos, "fix nothing all addforce 0.0 0.0 0.0\n");
+  ASSERT_EQ(pass.size(), own.size());
+  EXPECT_EQ(pass, own);
+  const std::vector<double> cpu = bed_under_every_fix(Accel::none, "");
+  double worst = 0.0;
+  for (size_t k = 0; k < cpu.size(); ++k) worst = std::max(worst, std::fabs(pass[k] - cpu[k]));
+  std::printf("[ report ] kk pass against CPU: largest difference %.3g\n", worst);
+  EXPECT_LT(worst, 1e-8);
+  EXPECT_NE(pass[pass.size() - 2], 0.0);    // the plate moved
 }

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
+using pwtest::Accel;
 using pwtest::Lammps;
 using pwtest::PLATE_ACCELERATION;
 using pwtest::sheared_stack;
@@ -134,4 +135,23 @@ TEST(FixShearStress, PlateSticksBelowAndSlidesAboveTheFrictionLimit)
     EXPECT_LE(resisting, mu * sigma);
     EXPECT_GT(resisting, 0.9 * mu * sigma);    // sliding, with the normals tilted by ~1°
   }
+}
+
+// On one rank fix shear/stress/kk (with wall/stress/kk on it) keeps the plate on the device
+// during a run and brings it to the host where it is read: read every step (thermo) over
+// runs of 30 steps, reading must change nothing.
+TEST(FixShearStress, KokkosPlateReadEveryStepChangesNothing)
+{
+  PW_SKIP_WITHOUT_KOKKOS();
+  auto end_of = [](bool read) {
+    Lammps l(Accel::kokkos);
+    l.commands(sheared_stack(8.0));
+    if (read) l.commands("thermo_style custom step f_s[1] f_s[2] f_s[3] f_w[1]\nthermo 1\n");
+    for (int k = 0; k < 6; ++k) l.command("run 30");
+    return std::vector<double>{l.equal("f_s[1]"), l.equal("f_s[2]"), l.equal("f_s[3]"),
+                               l.equal("f_w[2]"), l.equal("x[10]"), l.equal("vx[10]")};
+  };
+  const std::vector<double> unread = end_of(false);
+  ASSERT_GT(unread[1], 0.0);    // the plate slides
+  EXPECT_EQ(end_of(true), unread);
 }

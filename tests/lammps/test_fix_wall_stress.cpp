@@ -208,6 +208,29 @@ TEST(FixWallStress, KokkosVirialEqualsCpuVirial)
   EXPECT_NEAR(pzz[1], pzz[0], 1e-10 * pzz[0]);
 }
 
+// On one rank fix wall/stress/kk keeps the wall on the device during a run and brings it
+// to the host where it is read. Read in every hook of every step (a variable of fix
+// addforce in post_force, after the wall: the half-step velocity; thermo at the step's
+// end), over runs that each end there, reading it must change nothing.
+TEST(FixWallStress, KokkosWallReadInEveryHookChangesNothing)
+{
+  PW_SKIP_WITHOUT_KOKKOS();
+  auto end_of = [](bool read) {
+    Lammps l(Accel::kokkos);
+    l.commands(pwtest::oscillating_stress);
+    loaded_stack(l, "v_s");
+    if (read)
+      l.commands("variable zero equal 0*f_w[2]\nfix read all addforce 0.0 0.0 v_zero\n"
+                 "thermo_style custom step f_w[1] f_w[2] f_w[3]\nthermo 1\n");
+    for (int k = 0; k < 12; ++k) l.command("run 30");
+    return std::vector<double>{l.equal("f_w[1]"), l.equal("f_w[2]"), l.equal("f_w[3]"),
+                               l.equal("f_w[6]"), l.equal("z[36]"), l.equal("vz[36]")};
+  };
+  const std::vector<double> unread = end_of(false);
+  ASSERT_NE(unread[1], 0.0);    // the wall still moves
+  EXPECT_EQ(end_of(true), unread);
+}
+
 TEST(FixWallStress, WallLeavingTheBoxNamesTheStep)
 {
   Lammps l;

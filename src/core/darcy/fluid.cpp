@@ -191,7 +191,7 @@ void DarcyFluid::setup(FluidHost &host, GrainBackend &grains, const GrainStep &n
 
 void DarcyFluid::post_force(FluidHost &host, GrainBackend &grains, const GrainStep &now)
 {
-  const bool fluid_step = now.step - last_fluid_step_ >= settings_.every;
+  const bool fluid_step = is_fluid_step(now.step);
   if (fluid_step) advance(host, grains, now.step, settings_.every * now.dt);
   apply_or_hold_force(host, grains, now.step, fluid_step);
   write_output(host, now.step, now.time);
@@ -200,12 +200,21 @@ void DarcyFluid::post_force(FluidHost &host, GrainBackend &grains, const GrainSt
 // `interpolate step`: -V grad p at every grain's position every step. `interpolate fluid`:
 // only on fluid steps, and again whenever the host has re-ordered its grains since (the
 // held forces are per local index); held in between.
+bool DarcyFluid::held_force_valid(FluidHost &host) const
+{
+  return !settings_.interpolate_every_step && force_step_ >= 0 &&
+      !host.grains_reordered_since(force_step_);
+}
+
+bool DarcyFluid::only_holds_force(FluidHost &host, long long step) const
+{
+  return !is_fluid_step(step) && held_force_valid(host);
+}
+
 void DarcyFluid::apply_or_hold_force(FluidHost &host, GrainBackend &grains, long long step,
                                      bool fluid_step)
 {
-  const bool held_valid = !settings_.interpolate_every_step && force_step_ >= 0 &&
-      !host.grains_reordered_since(force_step_);
-  if (!fluid_step && held_valid) {
+  if (!fluid_step && held_force_valid(host)) {
     grains.add_held_force();
     return;
   }

@@ -120,6 +120,9 @@ class DarcyFluid {
   // grains; then a fluid step whenever `every` grain steps have passed, and the force
   void setup(FluidHost &host, GrainBackend &grains, const GrainStep &now);
   void post_force(FluidHost &host, GrainBackend &grains, const GrainStep &now);
+  // whether post_force at `step` only adds the held force to the grains (no fluid step, no
+  // new interpolation): a host may then run that per-grain work in a pass of its own
+  bool only_holds_force(FluidHost &host, long long step) const;
 
   double vector(int n) const;
   // the per-cell field `name` (pressure, porosity, permeability, mean_velocity,
@@ -138,6 +141,8 @@ class DarcyFluid {
   void update_porosity(FluidHost &host, long long step);
   BoundaryValues boundary_values(FluidHost &host, long long step);
   void check_solution(FluidHost &host, long long step);
+  bool is_fluid_step(long long step) const { return step - last_fluid_step_ >= settings_.every; }
+  bool held_force_valid(FluidHost &host) const;
   void apply_or_hold_force(FluidHost &host, GrainBackend &grains, long long step, bool fluid_step);
   void refresh_force_field();
   void write_output(FluidHost &host, long long step, double time);

@@ -133,6 +133,28 @@ ProgressSettings parse_progress(KeywordReader &in)
   return s;
 }
 
+PrintEverySettings parse_print_every(KeywordReader &in)
+{
+  PrintEverySettings s;
+  s.every = in.named("N").count();
+  s.text = in.named("text").word("a string");
+  while (!in.done()) {
+    const std::string &key = in.keyword();
+    if (key == "file" || key == "append") {
+      s.append = key == "append";
+      s.file = in.word("a file name");
+    } else if (key == "screen") {
+      s.screen = in.yes_no();
+    } else if (key == "title") {
+      s.title = in.word("a string");
+      s.title_given = true;
+    } else {
+      in.unknown_keyword({"file", "append", "screen", "title"});
+    }
+  }
+  return s;
+}
+
 Ty3Settings parse_ty3(KeywordReader &in)
 {
   Ty3Settings s;

@@ -71,6 +71,17 @@ struct ProgressSettings {
   double safety = 1.5;          // the next chunk is estimated as this many times the last one
 };
 ProgressSettings parse_progress(KeywordReader &in);
+// fix ID group print/every N "text" [file F | append F] [screen yes|no] [title T]
+struct PrintEverySettings {
+  int every = 0;             // a line at every step that is a multiple of this
+  std::string text;          // with $ variables, substituted at each line
+  std::string file;          // empty: none
+  bool append = false;       // the file opened to append (append F), else truncated (file F)
+  bool screen = true;        // the line on the screen and the log too
+  std::string title;         // the file's first line
+  bool title_given = false;  // otherwise "# Fix print/every output for fix ID"
+};
+PrintEverySettings parse_print_every(KeywordReader &in);
 // fix ID group darcy/pressure grid Nx Ny Nz viscosity MU compressibility BETA density RHO
 //   permeability KC [keywords]; see doc/fix_darcy_pressure.rst
 struct DarcySettings {

@@ -99,15 +99,20 @@ class RigidPlate {
   double velocity(RigidPlateHost &host) const;    // mass-weighted mean v_x (a reduction)
   double vector(RigidPlateHost &host, int n) const;
 
-  std::vector<double> restart_state() const { return {displacement_}; }
-  void restore(const std::vector<double> &state) { displacement_ = state[0]; }
+  std::vector<double> restart_state() const { return {state_.displacement}; }
+  void restore(const std::vector<double> &state) { state_.displacement = state[0]; }
+
+  // the whole state, for a host that moves the plate elsewhere between its hooks (fix
+  // shear/stress/kk on the device) and hands it back
+  const PlateState &state() const { return state_; }
+  void set_state(const PlateState &state) { state_ = state; }
+  // stops the run for what plate_post_force found at `now` (its verdict is not PLATE_MOVING)
+  void stop_for(RigidPlateHost &host, const PlateStepResult &result, const PlateStep &now) const;
 
  private:
   ShearStressSettings settings_;
   std::string id_;
-  double displacement_;        // mass-weighted mean unwrapped x of the group − reference_x
-  double reference_x_;         // that mean where the displacement was zero
-  double resisting_stress_;    // −ΣF_x/(L_x L_y), ΣF_x before the plate's own force
+  PlateState state_;
 };
 
 // The fixes after `self` in the host's list (Modify: nfix, fix[], fmask[]) whose mask has

@@ -11,8 +11,8 @@ static_assert(WALL_DAMPING_RELATIVE == 0 && WALL_DAMPING_ABSOLUTE == 1,
 const RestartFormat StressWall::RESTART{RestartStyle::WallStress, 1, "fix wall/stress"};
 
 StressWall::StressWall(const WallStressSettings &settings, const std::string &id) :
-    settings_(settings), id_(id), z_wall_(settings.z), v_wall_(0.0), wall_force_(0.0),
-    grain_force_(0.0), grain_damping_(0.0), plate_damping_(0.0), applied_stress_(0.0), spring_energy_(0.0), z_auto_(settings.z_auto)
+    settings_(settings), id_(id), state_{settings.z, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+    z_auto_(settings.z_auto)
 {
 }
 
@@ -45,7 +45,7 @@ void StressWall::setup(StressWallHost &host, long long step)
     const double top = host.max_over_ranks(host.highest_grain_top());
     if (top == -std::numeric_limits<double>::infinity())
       host.stop("Fix wall/stress: z auto needs grains in group " + host.group_name());
-    z_wall_ = top;
+    state_.z = top;
     z_auto_ = false;
   }
   post_force(host, step);
@@ -53,29 +53,24 @@ void StressWall::setup(StressWallHost &host, long long step)
 
 void StressWall::initial_integrate(double dt)
 {
-  v_wall_ += 0.5 * dt * wall_force_ / settings_.mass;
-  z_wall_ += dt * v_wall_;
+  wall_initial_integrate(state_, dt, settings_.mass);
 }
 
 void StressWall::post_force(StressWallHost &host, long long step)
 {
-  applied_stress_ = host.stress_now();
+  const double stress = host.stress_now();
   double sums[4];
   host.contact_sums(sums);
   double totals[3] = {sums[0], sums[1], sums[3]};    // the virial, sums[2], stays per rank
   host.sum_over_ranks(totals, 3);
-  grain_force_ = totals[0];
-  spring_energy_ = totals[1];
-  grain_damping_ = totals[2];
-  // v_wall_ is the half-step velocity here, as the grains' are for their contact forces
-  plate_damping_ = plate_damping_force(v_wall_, settings_.plate_damping);
-  wall_force_ = grain_force_ - applied_stress_ * host.box().area + plate_damping_;
+  wall_post_force(state_, totals[0], totals[1], totals[2], stress, host.box().area,
+                  settings_.plate_damping);
   check_in_box(host, step);
 }
 
 void StressWall::final_integrate(double dt)
 {
-  v_wall_ += 0.5 * dt * wall_force_ / settings_.mass;
+  wall_kick(state_, dt, settings_.mass);
 }
 
 // every rank holds the same wall, so every rank reaches the same verdict; the message is
@@ -83,21 +78,24 @@ void StressWall::final_integrate(double dt)
 void StressWall::check_in_box(StressWallHost &host, long long step)
 {
   const WallBox box = host.box();
-  // a shrink-wrapped top follows the grains: allow a gap as high as the box itself
-  const double top = box.top_shrink_wrapped ? box.top + (box.top - box.bottom) : box.top;
-  const bool finite = std::isfinite(z_wall_) && std::isfinite(v_wall_);
-  if (finite && z_wall_ >= box.bottom && z_wall_ <= top) return;
+  const int verdict = wall_verdict(state_, box);
+  if (verdict != WALL_IN_BOX) stop_outside_box(host, verdict, step, state_, box);
+}
+
+void StressWall::stop_outside_box(StressWallHost &host, int verdict, long long step,
+                                  const WallState &w, const WallBox &box) const
+{
   const std::string at = "Fix wall/stress " + id_ + ": ";
-  const std::string z = round_trip_text(z_wall_), when = std::to_string(step);
-  if (!finite)
+  const std::string z = round_trip_text(w.z), when = std::to_string(step);
+  if (verdict == WALL_NOT_FINITE)
     host.stop(at + "the wall ran away at step " + when + ": z = " + z + ", v = " +
-              round_trip_text(v_wall_));
-  else if (z_wall_ < box.bottom)
+              round_trip_text(w.v));
+  else if (verdict == WALL_BELOW_BOX)
     host.stop(at + "the wall fell to z = " + z + " at step " + when + ", below the box bottom " +
               round_trip_text(box.bottom) + " and so through every grain");
   else
     host.stop(at + "the wall rose to z = " + z + " at step " + when + ", above the box top " +
-              round_trip_text(top));
+              round_trip_text(wall_box_top(box)));
 }
 
 // vector: 1 z_wall, 2 v_wall, 3 grain force per area (effective normal stress), 4 applied S,
@@ -106,38 +104,38 @@ double StressWall::vector(int n, double area) const
 {
   switch (n) {
     case 0:
-      return z_wall_;
+      return state_.z;
     case 1:
-      return v_wall_;
+      return state_.v;
     case 2:
-      return grain_force_ / area;
+      return state_.grain_force / area;
     case 3:
-      return applied_stress_;
+      return state_.applied_stress;
     case 4:
-      return grain_damping_ / area;
+      return state_.grain_damping / area;
     default:
-      return plate_damping_ / area;
+      return state_.plate_damping / area;
   }
 }
 
 double *StressWall::extract(const std::string &name)
 {
-  if (name == "z_wall") return &z_wall_;
-  if (name == "v_wall") return &v_wall_;
+  if (name == "z_wall") return &state_.z;
+  if (name == "v_wall") return &state_.v;
   return nullptr;
 }
 
 // restart: the wall's position, velocity, last force and whether `auto` is still pending
 std::vector<double> StressWall::restart_state() const
 {
-  return {z_wall_, v_wall_, wall_force_, z_auto_ ? 1.0 : 0.0};
+  return {state_.z, state_.v, state_.force, z_auto_ ? 1.0 : 0.0};
 }
 
 void StressWall::restore(const std::vector<double> &state)
 {
-  z_wall_ = state[0];
-  v_wall_ = state[1];
-  wall_force_ = state[2];
+  state_.z = state[0];
+  state_.v = state[1];
+  state_.force = state[2];
   z_auto_ = state[3] != 0.0;
 }
 

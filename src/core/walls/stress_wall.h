@@ -13,19 +13,13 @@
 #include "input/restart_state.h"
 #include "input/settings.h"
 #include "walls/wall_contact.h"
+#include "walls/wall_motion.h"
 
 #include <limits>
 #include <string>
 #include <vector>
 
 namespace porewater {
-
-// The host's box in z, as the wall sees it at a force evaluation.
-struct WallBox {
-  double bottom, top;
-  bool top_shrink_wrapped;    // a shrink-wrapped top follows the grains
-  double area;                // L_x L_y
-};
 
 class StressWallHost {
  public:
@@ -88,13 +82,20 @@ class StressWall {
   WallContacts<G, PerAtomVirial> contacts(const G &grains, const PerAtomVirial &per_atom,
                                           int groupbit) const
   {
-    return WallContacts<G, PerAtomVirial>{grains, per_atom, groupbit, z_wall_, v_wall_,
+    return WallContacts<G, PerAtomVirial>{grains, per_atom, groupbit, state_.z, state_.v,
                                           settings_.kn, settings_.damping,
                                           settings_.damping_velocity};
   }
 
-  double z() const { return z_wall_; }
-  double scalar() const { return spring_energy_; }
+  double z() const { return state_.z; }
+  double scalar() const { return state_.spring_energy; }
+  // the whole state, for a host that moves the wall elsewhere between its hooks (fix
+  // wall/stress/kk on the device) and hands it back
+  const WallState &state() const { return state_; }
+  void set_state(const WallState &state) { state_ = state; }
+  // stops the run: the wall left the box (wall_verdict) at `step`, being at `w` in `box`
+  void stop_outside_box(StressWallHost &host, int verdict, long long step, const WallState &w,
+                        const WallBox &box) const;
   double vector(int n, double area) const;
   double *extract(const std::string &name);    // z_wall, v_wall; nullptr otherwise
 
@@ -106,13 +107,7 @@ class StressWall {
 
   WallStressSettings settings_;
   std::string id_;
-  double z_wall_, v_wall_;
-  double wall_force_;        // on the wall at the last force evaluation: grain_force − S·L_x·L_y
-  double grain_force_;       // sum of the grains' contact forces on the wall (≥ 0)
-  double grain_damping_;     // the grain–wall dashpots' share of grain_force_
-  double plate_damping_;     // the plate dashpot's force on the wall, −γ_p v_w
-  double applied_stress_;    // S at the last force evaluation
-  double spring_energy_;     // ½ k_n δ² summed over the grain–wall contacts
+  WallState state_;
   bool z_auto_;              // until `z auto` has put the wall on the highest grain
 };
 
