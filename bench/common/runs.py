@@ -2,6 +2,7 @@
 with -var overrides (niced, each run free to use any core), its CPU and wall seconds and the
 load around it, LAMMPS' loop times, the commit the runs come from, a copy of the plugin that a
 rebuild does not touch, and the Kokkos dispatches a step makes."""
+import glob
 import os
 import re
 import shutil
@@ -80,11 +81,19 @@ def read_cost(workdir):
         if legs.shape[1] >= 4 else list(legs[:, :2].sum(axis=0))
 
 
+def run_logs(workdir):
+    """the logs of a run of the example in the order of its legs: log.lammps, then each
+    continued leg's (run_example)"""
+    legs = glob.glob(os.path.join(workdir, "log.continued*"))
+    return [os.path.join(workdir, "log.lammps")] + sorted(
+        legs, key=lambda p: int(p.rsplit(".", 1)[1]) if p[-1].isdigit() else 1)
+
+
 def run_example(workdir, variables, t_end, ranks=1, args=(), threads=1, data=None):
     """in.tidal_shear in workdir until its time series reaches t_end s (timed_run): from the
     start, or continued from workdir's checkpoint where a run stopped before (-var continue 1,
-    log.continued); `data`: a file to copy there first. The run's CPU s, or None if it was
-    complete"""
+    each leg's log its own: log.continued.K); `data`: a file to copy there first. The leg's
+    CPU s, or None if the run was complete"""
     if complete(os.path.join(workdir, "timeseries.txt"), t_end):
         return None
     go_on = os.path.exists(os.path.join(workdir, "checkpoint.restart"))
@@ -92,9 +101,26 @@ def run_example(workdir, variables, t_end, ranks=1, args=(), threads=1, data=Non
         prepare(workdir)
         if data:
             shutil.copy(data, workdir)
+    log = "log.continued.%d" % len(run_logs(workdir)) if go_on else "log.lammps"
     return timed_run(workdir, "in.tidal_shear", dict(variables, **({"continue": 1} if go_on else {})),
-                     ranks=ranks, args=args, threads=threads,
-                     log="log.continued" if go_on else "log.lammps")
+                     ranks=ranks, args=args, threads=threads, log=log)
+
+
+CHUNK = re.compile(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps.*?\n"
+                   r"\s*([0-9.]+)% CPU use with (\d+) MPI tasks", re.S)
+
+
+def chunks_cpu(workdir):
+    """(CPU s, steps) of a run of the example's completed chunks over all its legs' logs: each
+    chunk's loop time x its CPU use x its MPI tasks, as LAMMPS reports them. A leg killed
+    mid-chunk lost that chunk's work, which the next leg does again: counted once."""
+    cpu, steps = 0.0, 0
+    for log in run_logs(workdir):
+        if os.path.exists(log):
+            for loop, _, n, use, tasks in CHUNK.findall(open(log).read()):
+                cpu += float(loop) * float(use) / 100.0 * int(tasks)
+                steps += int(n)
+    return cpu, steps
 
 
 def loop_time(log, last=True):

@@ -9,7 +9,7 @@ import numpy as np
 
 from common import COMMON
 from common.ensembles import METRICS, band, mean_band, run_metrics, summary
-from common.runs import load, read_cost
+from common.runs import chunks_cpu, load
 from paper_scene import (DEFAULT_MEMBERS, STIFF_EPS_CHECK, STIFF_MEMBERS, TABLE_S1_CYCLES,
                          eps_check)
 from porewater_analysis import original
@@ -275,15 +275,16 @@ def dump_check(d, data="bed.data"):
 
 # ---- the page ---------------------------------------------------------------------------------
 
-def legs_text(work, folders):
-    """CPU s per run (all its legs) over the complete runs of `folders`, with the loads"""
-    costs = [read_cost(os.path.join(work, f)) for f in folders]
-    costs = [c for c in costs if c]
+def cost_text(work, folders):
+    """CPU s per run (its chunks over all its legs: common.runs.chunks_cpu) and µs per step of
+    the complete runs of `folders`"""
+    costs = [chunks_cpu(os.path.join(work, f)) for f in folders]
+    costs = [c for c in costs if c[1]]
     if not costs:
-        return "not recorded"
-    return "%.0f-%.0f CPU s per run (load at the legs' starts and ends %s)" % (
+        return "no runs"
+    return "%.0f-%.0f CPU s per run, %.0f-%.0f µs per step" % (
         min(c[0] for c in costs), max(c[0] for c in costs),
-        ", ".join("%.1f/%.1f" % (c[2], c[3]) for c in costs))
+        min(1e6 * c[0] / c[1] for c in costs), max(1e6 * c[0] / c[1] for c in costs))
 
 
 def plot(per_cycle, bootstrap, path):
@@ -342,15 +343,16 @@ def report(work, out):
              "data file's values stand under the original's estimators only." % (
                  head_commit(), work), ""]
     lines += front_table(s1, [("the stiff preset", stiff), ("the default", default)])
-    lines += ["", "## Costs", "",
+    lines += ["", "## Costs (CPU s of each run's chunks as LAMMPS reports them: loop time x CPU use; "
+              "the runs shared the 2 cores with others)", "",
               "- the stiff preset, 4 cycles, 1 rank (two runs side by side): " +
-              legs_text(work, ["stiff/member%d" % k for k in range(STIFF_MEMBERS)]),
+              cost_text(work, ["stiff/member%d" % k for k in range(STIFF_MEMBERS)]),
               "- the stiff preset at ε 0.07: " +
-              legs_text(work, ["stiff_eps0.07/member%d" % k for k in range(STIFF_EPS_CHECK)]),
+              cost_text(work, ["stiff_eps0.07/member%d" % k for k in range(STIFF_EPS_CHECK)]),
               "- the default, 4 cycles, 1 rank: " +
-              legs_text(work, ["default/member%d" % k for k in range(DEFAULT_MEMBERS)]),
+              cost_text(work, ["default/member%d" % k for k in range(DEFAULT_MEMBERS)]),
               "- Table S1, %d cycles, 2 ranks: %s" % (TABLE_S1_CYCLES,
-                                                      legs_text(work, ["table_s1"]))]
+                                                      cost_text(work, ["table_s1"]))]
     if len(stiff) >= 3 and fine:
         lines += ["", "## The stiff preset's time step: ε 0.07 against its band at ε 0.14", ""]
         lines += eps_table(stiff, fine)
