@@ -116,7 +116,7 @@ def least_squares_profile(friction, rate, exponents):
     return a, ((rate[None, :] - a[:, None] * fn) ** 2).sum(axis=1)
 
 
-PROFILE_EXPONENTS = np.linspace(0.0, 40.0, 4001)   # n of the profile: the paper's 6-11 well inside
+PROFILE_EXPONENTS = np.linspace(-20.0, 40.0, 6001)   # n of the profile: the paper's 6-11 well inside
 
 
 def creep_fit_minimum(friction, rate, exponents=PROFILE_EXPONENTS, level=0.95):

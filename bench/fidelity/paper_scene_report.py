@@ -113,15 +113,15 @@ def eps_table(coarse, fine):
 # ---- the original's creep fit: as its script runs it, and the minimum it seeks ----------
 
 def fit_samples(d, cycles):
-    """the original's creep-fit samples (tau/N, scaled rate) of a run in each cycle of
-    `cycles` and pooled over them: {cycle or "pooled": (friction, rate)}"""
+    """the original's creep-fit samples (tau/N, scaled rate, phase) of a run in each cycle of
+    `cycles` and pooled over them: {cycle or "pooled": (friction, rate, phase)}"""
     params, _ = parameters(d)
     series = load(os.path.join(d, "timeseries.txt"))
     p = original.creep_samples(series, params["period"], params["tau"], params["rate_scale"])
     out = {}
     for k in list(cycles) + ["pooled"]:
         use = p["kept"] & (np.isin(p["cycle"], cycles) if k == "pooled" else p["cycle"] == k)
-        out[k] = (p["friction"][use], p["rate"][use])
+        out[k] = (p["friction"][use], p["rate"][use], p["time"][use] / params["period"])
     return out
 
 
@@ -151,18 +151,19 @@ def short_status(status):
 
 def interval_text(best):
     lo, hi = best["interval"]
-    return "%s-%s" % ("<0" if lo is None else "%.1f" % lo, ">40" if hi is None else "%.1f" % hi)
+    return "%s to %s" % ("< -20" if lo is None else "%.1f" % lo, "> 40" if hi is None else "%.1f" % hi)
 
 
 def fit_study(runs):
     """runs: [(label, folder, cycles)]: (the per-run table's lines, {(label, cycle): row})"""
     lines = ["| run | cycles | samples | n as the script runs it (its first fit, A = 1) | n at "
              "the least-squares minimum | its profile interval (95 %, residuals independent) | "
-             "SSR at n 6 / 11 over the minimum | curve_fit on the rates over their median |",
-             "|---|---|---|---|---|---|---|---|"]
+             "SSR at n 6 / 11 over the minimum | curve_fit on the rates over their median | the "
+             "5 fastest samples' share of the sum of squared rates (their phases) |",
+             "|---|---|---|---|---|---|---|---|---|"]
     per_cycle = {}
     for label, d, cycles in runs:
-        for k, (f, r) in fit_samples(d, cycles).items():
+        for k, (f, r, phases) in fit_samples(d, cycles).items():
             row = fit_row(f, r)
             if row is None:
                 continue
@@ -170,11 +171,13 @@ def fit_study(runs):
             best = row["minimum"]
             ratio = original.least_squares_profile(f, r, list(PAPER_N))[1] / best["ssr"]
             first = row["as_run"]["first"]["params"][0]
-            lines.append("| %s | %s | %d | %s (%s) | %.2f | %s | %.2f / %.2f | %.2f |" % (
+            fastest = np.argsort(-r)[:5]
+            lines.append("| %s | %s | %d | %s (%s) | %.2f | %s | %.2f / %.2f | %.2f | %.2f (%s) |" % (
                 label, "%d-%d pooled" % (cycles[0], cycles[-1]) if k == "pooled" else k,
                 row["samples"], as_run_text(row["as_run"]),
                 "none" if np.isnan(first) else "%.1f" % first, best["n"], interval_text(best),
-                ratio[0], ratio[1], row["rescaled"]))
+                ratio[0], ratio[1], row["rescaled"], np.sum(r[fastest] ** 2) / np.sum(r ** 2),
+                ", ".join("%.2f" % (p % 1.0) for p in phases[fastest])))
     return lines, per_cycle
 
 
@@ -209,7 +212,7 @@ def bootstrap_minimum(units, draws=1000, seed=1):
         pick = [units[i] for i in rng.integers(0, len(units), len(units))]
         out.append(original.creep_fit_minimum(np.concatenate([u[0] for u in pick]),
                                               np.concatenate([u[1] for u in pick]),
-                                              exponents=np.linspace(0, 40, 401))["n"])
+                                              exponents=np.linspace(-20, 40, 601))["n"])
     return np.array(out)
 
 
@@ -364,7 +367,7 @@ def report(work, out):
     table, per_cycle = fit_study(runs)
     boot = np.array([])
     stiff_units = [fit_samples(os.path.join(work, "stiff", m), (2, 3, 4)) for m in stiff]
-    units = [u[k] for u in stiff_units for k in (2, 3, 4)]
+    units = [u[k][:2] for u in stiff_units for k in (2, 3, 4)]
     if len(units) >= 6:
         boot = bootstrap_minimum(units)
     lines += ["", "## The original's creep fit: as its script runs it, and the minimum it seeks", ""]
