@@ -15,6 +15,8 @@ def load(path):
     with (lzma.open(path, "rt") if path.endswith(".xz") else open(path)) as f:
         names = f.readline().lstrip("# ").split()
         data = np.loadtxt(f, ndmin=2)
+    if data.size == 0:             # the header alone: a run stopped before its first row
+        data = np.empty((0, len(names)))
     return {n: data[:, k] for k, n in enumerate(names)}
 
 

@@ -136,7 +136,8 @@ def every_sweep(workdir, horizon, ranks, report):
                 shutil.copy(os.path.join(workdir, f), run_dir)
         if "1e-12" in name:  # the example's fix line gains a tighter tolerance
             src = open(os.path.join(run_dir, "in.tidal_shear")).read()
-            src = edited(src, "solver ${solver_args} &", "solver ${solver_args} tol 1e-12 &")
+            src = edited(src, "solver ${solver_args} seepage ${seepage} &",
+                         "solver ${solver_args} seepage ${seepage} tol 1e-12 &")
             open(os.path.join(run_dir, "in.tidal_shear"), "w").write(src)
         t = run_lmp(run_dir, "in.tidal_shear", dict(variables, run_steps=horizon, samples=2000), ranks)
         results[name] = (t, read_series(os.path.join(run_dir, "timeseries.txt")))

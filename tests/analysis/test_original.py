@@ -209,6 +209,16 @@ class RunFolder(unittest.TestCase):
             for name in series:
                 np.testing.assert_array_equal(back[name], series[name])
 
+    def test_load_of_a_series_without_rows(self):
+        """a run stopped before its first row: every column, empty"""
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "timeseries.txt")
+            with open(path, "w") as f:
+                f.write("# time vx_top x_top\n")
+            back = load(path)
+            self.assertEqual(sorted(back), ["time", "vx_top", "x_top"])
+            self.assertTrue(all(len(v) == 0 for v in back.values()))
+
     def test_cli_writes_the_table_and_the_figure(self):
         series, _ = synthetic()
         with tempfile.TemporaryDirectory() as d:
