@@ -14,9 +14,13 @@ In this order (both cores busy throughout), parameters fixed before any of the r
   default     the default's ensemble again, DEFAULT_MEMBERS members (the original's count,
               coordination/original, is now rebuilt at each run's setup: compute
               coordination/original, doc)
+  cost        (only when named in --only: each run alone on the machine) the stiff preset
+              on 1 rank and on 2 ranks for COST_CYCLES of a cycle from its start: the wall
+              time per step of each layout, side by side in one call
 
 Usage (source scripts/env.sh first):
     /usr/bin/python3 bench/fidelity/paper_scene.py [--work DIR] [--only stiff,table_s1,...]
+    /usr/bin/python3 bench/fidelity/paper_scene.py --only cost     # ~2 min, nothing else running
 The short setting (bench/smoke.py): CYCLES and the members shortened; table_s1 needs the
 9,600-grain bed's preparation and is not part of it.
 """
@@ -40,6 +44,8 @@ TABLE_S1_CYCLES, TABLE_S1_PERIOD = 3, 5.0
 MU_TALL = 0.0444                 # bench/creep_factors/creep_factors_bisect.md: 4.61 by the original's count
 SOFT_KN = 1.16e7                 # the Table S1 bed is packed at the reduced case's k_n
 DUMP_CYCLES = 0.25
+COST_CYCLES = short(0.05, 0.002)
+COST_RANKS = (1, 2)
 
 
 def member_variables(k):
@@ -170,6 +176,17 @@ def table_s1(work, eps):
     print("table_s1: %s" % ("done before" if cpu is None else "%.0f s CPU" % cpu), flush=True)
 
 
+def stiff_cost(work):
+    """the stiff preset from its start for COST_CYCLES of a cycle on each of COST_RANKS, one
+    after the other (the machine otherwise idle: the load is in each run's cost.txt)"""
+    for ranks in COST_RANKS:
+        d = os.path.join(work, "stiff_cost", "np%d" % ranks)
+        cpu = run_example(d, {"bed": "stiff", "cycles": COST_CYCLES}, COST_CYCLES * PERIOD,
+                          ranks=ranks)
+        print("stiff_cost/np%d: %s" % (ranks, "done before" if cpu is None else
+                                       "%.0f s CPU" % cpu), flush=True)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--work", default=WORK)
@@ -191,6 +208,8 @@ def main():
         table_s1(args.work, eps)
     if "default" in parts:
         run_pool(args.work, default_runs(args.work))
+    if "cost" in parts:
+        stiff_cost(args.work)
 
 
 if __name__ == "__main__":

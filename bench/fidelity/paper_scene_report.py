@@ -9,15 +9,17 @@ import numpy as np
 
 from common import COMMON
 from common.ensembles import METRICS, band, mean_band, run_metrics, summary
-from common.runs import chunks_cpu, load
-from paper_scene import (DEFAULT_MEMBERS, STIFF_EPS_CHECK, STIFF_MEMBERS, TABLE_S1_CYCLES,
-                         eps_check)
+from common.ensembles import PERIOD
+from common.runs import chunks_cpu, load, loop_time, read_cost, run_logs, time_step
+from paper_scene import (COST_CYCLES, COST_RANKS, DEFAULT_MEMBERS, STIFF_EPS_CHECK, STIFF_MEMBERS,
+                         TABLE_S1_CYCLES, eps_check)
 from porewater_analysis import original
 from porewater_analysis.cycles import original_data_file_metrics
 from porewater_analysis.dump import box_bounds, read_dump
 from porewater_analysis.report import parameters
 from porewater_analysis.timeseries import run_parameters
 
+STIFF_KN, STIFF_EPS = 1.16e9, 0.14     # examples/tidal_shear/in.bed_stiff
 DATA_FILE = os.path.join(COMMON, "original_run_contacts.txt")
 PAPER_N = (6.0, 11.0)
 TABLE_S1_KEEP = (2, 3)       # the original's creep windows 6-8 s and 11-13 s
@@ -280,7 +282,7 @@ def dump_check(d, data="bed.data"):
 
 def cost_text(work, folders):
     """CPU s per run (its chunks over all its legs: common.runs.chunks_cpu) and µs per step of
-    the complete runs of `folders`"""
+    the runs of `folders` (the complete ones: the callers pass those)"""
     costs = [chunks_cpu(os.path.join(work, f)) for f in folders]
     costs = [c for c in costs if c[1]]
     if not costs:
@@ -288,6 +290,27 @@ def cost_text(work, folders):
     return "%.0f-%.0f CPU s per run, %.0f-%.0f µs per step" % (
         min(c[0] for c in costs), max(c[0] for c in costs),
         min(1e6 * c[0] / c[1] for c in costs), max(1e6 * c[0] / c[1] for c in costs))
+
+
+def layout_cost_text(work, steps_4_cycles):
+    """the stiff preset's wall time per step on each of COST_RANKS, each run alone on the
+    machine (paper_scene.py --only cost), and the 4 cycles' wall time projected from it"""
+    cells = []
+    for ranks in COST_RANKS:
+        d = os.path.join(work, "stiff_cost", "np%d" % ranks)
+        cost = read_cost(d)
+        if cost is None or not os.path.exists(os.path.join(d, "log.lammps")):
+            cells.append("%d rank(s): not measured" % ranks)
+            continue
+        loop, steps = map(sum, zip(*(loop_time(log, last=False) for log in run_logs(d)
+                                     if os.path.exists(log))))
+        us = 1e6 * loop / steps
+        cells.append("%d rank%s %.0f µs per step (4 cycles: %.0f min; load %.2f before, %.2f "
+                     "after)" % (ranks, "s" if ranks > 1 else "", us, us * steps_4_cycles / 6e7,
+                                 cost[2], cost[3]) if len(cost) >= 4 else
+                     "%d rank(s) %.0f µs per step" % (ranks, us))
+    return "the first %g of a cycle, wall time of its chunks' loops: %s" % (
+        COST_CYCLES, "; ".join(cells))
 
 
 def plot(per_cycle, bootstrap, path):
@@ -349,13 +372,15 @@ def report(work, out):
     lines += ["", "## Costs (CPU s of each run's chunks as LAMMPS reports them: loop time x CPU use; "
               "the runs shared the 2 cores with others)", "",
               "- the stiff preset, 4 cycles, 1 rank (two runs side by side): " +
-              cost_text(work, ["stiff/member%d" % k for k in range(STIFF_MEMBERS)]),
+              cost_text(work, ["stiff/" + m for m in stiff]),
+              "- the stiff preset, each layout alone on the machine: " +
+              layout_cost_text(work, 4 * PERIOD / time_step(STIFF_KN, STIFF_EPS)),
               "- the stiff preset at ε 0.07: " +
-              cost_text(work, ["stiff_eps0.07/member%d" % k for k in range(STIFF_EPS_CHECK)]),
+              cost_text(work, ["stiff_eps0.07/" + m for m in fine]),
               "- the default, 4 cycles, 1 rank: " +
-              cost_text(work, ["default/member%d" % k for k in range(DEFAULT_MEMBERS)]),
+              cost_text(work, ["default/" + m for m in default]),
               "- Table S1, %d cycles, 2 ranks: %s" % (TABLE_S1_CYCLES,
-                                                      cost_text(work, ["table_s1"]))]
+                                                      cost_text(work, ["table_s1"] if s1 else []))]
     if len(stiff) >= 3 and fine:
         lines += ["", "## The stiff preset's time step: ε 0.07 against its band at ε 0.14", ""]
         lines += eps_table(stiff, fine)
