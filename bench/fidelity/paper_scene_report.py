@@ -9,9 +9,8 @@ import numpy as np
 
 from common import COMMON
 from common.ensembles import METRICS, band, mean_band, run_metrics, summary
-from common.ensembles import PERIOD
-from common.runs import chunks_cpu, load, loop_time, read_cost, run_logs, time_step
-from paper_scene import (COST_CYCLES, COST_RANKS, DEFAULT_MEMBERS, STIFF_EPS_CHECK, STIFF_MEMBERS,
+from common.runs import chunks_cpu, load, loop_time, read_cost, run_logs
+from paper_scene import (COST_RANKS, DEFAULT_MEMBERS, STIFF_EPS_CHECK, STIFF_MEMBERS,
                          TABLE_S1_CYCLES, eps_check)
 from porewater_analysis import original
 from porewater_analysis.cycles import original_data_file_metrics
@@ -19,7 +18,6 @@ from porewater_analysis.dump import box_bounds, read_dump
 from porewater_analysis.report import parameters
 from porewater_analysis.timeseries import run_parameters
 
-STIFF_KN, STIFF_EPS = 1.16e9, 0.14     # examples/tidal_shear/in.bed_stiff
 DATA_FILE = os.path.join(COMMON, "original_run_contacts.txt")
 PAPER_N = (6.0, 11.0)
 TABLE_S1_KEEP = (2, 3)       # the original's creep windows 6-8 s and 11-13 s
@@ -292,25 +290,26 @@ def cost_text(work, folders):
         min(1e6 * c[0] / c[1] for c in costs), max(1e6 * c[0] / c[1] for c in costs))
 
 
-def layout_cost_text(work, steps_4_cycles):
+def layout_cost_text(work):
     """the stiff preset's wall time per step on each of COST_RANKS, each run alone on the
-    machine (paper_scene.py --only cost), and the 4 cycles' wall time projected from it"""
+    machine (paper_scene.py --only cost), and 4 cycles' wall time at that rate (the run's own
+    time step and frequency, checkpoint_params.txt)"""
     cells = []
     for ranks in COST_RANKS:
         d = os.path.join(work, "stiff_cost", "np%d" % ranks)
         cost = read_cost(d)
-        if cost is None or not os.path.exists(os.path.join(d, "log.lammps")):
+        if cost is None:
             cells.append("%d rank(s): not measured" % ranks)
             continue
         loop, steps = map(sum, zip(*(loop_time(log, last=False) for log in run_logs(d)
                                      if os.path.exists(log))))
+        run = run_parameters(d)
         us = 1e6 * loop / steps
-        cells.append("%d rank%s %.0f µs per step (4 cycles: %.0f min; load %.2f before, %.2f "
-                     "after)" % (ranks, "s" if ranks > 1 else "", us, us * steps_4_cycles / 6e7,
-                                 cost[2], cost[3]) if len(cost) >= 4 else
-                     "%d rank(s) %.0f µs per step" % (ranks, us))
-    return "the first %g of a cycle, wall time of its chunks' loops: %s" % (
-        COST_CYCLES, "; ".join(cells))
+        cells.append("%d rank(s) %.0f µs per step over its first %.3g cycle (4 cycles: %.0f min; "
+                     "load %.2f before, %.2f after)" % (
+                         ranks, us, steps * run["dt"] * run["freq"],
+                         us * 4 / (run["freq"] * run["dt"]) / 6e7, cost[2], cost[3]))
+    return "wall time of its chunks' loops: " + "; ".join(cells)
 
 
 def plot(per_cycle, bootstrap, path):
@@ -374,7 +373,7 @@ def report(work, out):
               "- the stiff preset, 4 cycles, 1 rank (two runs side by side): " +
               cost_text(work, ["stiff/" + m for m in stiff]),
               "- the stiff preset, each layout alone on the machine: " +
-              layout_cost_text(work, 4 * PERIOD / time_step(STIFF_KN, STIFF_EPS)),
+              layout_cost_text(work),
               "- the stiff preset at ε 0.07: " +
               cost_text(work, ["stiff_eps0.07/" + m for m in fine]),
               "- the default, 4 cycles, 1 rank: " +
