@@ -33,11 +33,11 @@ def main():
     work = args.work or tempfile.mkdtemp(prefix="pw_checkpoint_cost_")
     cases = {"chunks of 0.05 cycle (default)": {}, "one chunk": {"checkpoint": 1e9}}
     load = open("/proc/loadavg").read().split()[0]
-    rounds = []
+    pairs = []
     for order in (list(cases), list(cases)[::-1]):    # started in both orders
         procs, dirs, ended, began = {}, {}, {}, {}
         for name in order:
-            d = os.path.join(work, f"round{len(rounds) + 1}_" + re.sub(r"\W+", "_", name))
+            d = os.path.join(work, f"pair{len(pairs) + 1}_" + re.sub(r"\W+", "_", name))
             prepare(d)
             cmd = ["lmp", "-in", "in.tidal_shear", "-var", "cycles", str(args.cycles), "-log",
                    "log.lammps", "-screen", "none"]
@@ -58,17 +58,17 @@ def main():
             loop, steps = loop_time(log, last=False)
             runs = len(re.findall(r"Loop time of", open(log).read()))
             rows.append((name, runs, steps, loop, ended[name], ended[name] - loop))
-        rounds.append((order[0], rows))
+        pairs.append((order[0], rows))
     commit = subprocess.run(["git", "describe", "--always", "--dirty=+uncommitted changes"],
                             cwd=HERE, capture_output=True, text=True).stdout.strip()
     lines = [f"# Cost of checkpointing examples/tidal_shear\n",
              f"Measured by `bench/checkpoint_cost/checkpoint_cost.py --cycles {args.cycles}` on commit {commit}, "
              f"the 2-core development machine, the two runs side by side, twice, started in "
              f"either order (load average {load} at the start).\n",
-             "| round | started first | run | runs (chunks) | steps | loop time (s) | process wall (s) | outside the steps (s) |",
+             "| pair | started first | run | runs (chunks) | steps | loop time (s) | process wall (s) | outside the steps (s) |",
              "|---|---|---|---|---|---|---|---|"]
     costs, ratios = [], []
-    for k, (first, rows) in enumerate(rounds):
+    for k, (first, rows) in enumerate(pairs):
         for name, runs, steps, loop, wall, outside in rows:
             lines.append(f"| {k + 1} | {first} | {name} | {runs} | {steps} | {loop:.2f} | "
                          f"{wall:.2f} | {outside:.2f} |")
@@ -82,7 +82,7 @@ def main():
                      f"{100 * extra / loop:.2f} % of the loop time (the limit: 1 %).")
     lines.append("")
     lines.append("The loop times differ by " + ", ".join(f"{100 * r:+.1f} %" for r in ratios) +
-                 " (chunked against one chunk, rounds 1 and 2). A chunk's setup and its "
+                 " (chunked against one chunk, pairs 1 and 2). A chunk's setup and its "
                  "checkpoint lie outside its loop and the steps do the same work, so this is the "
                  "noise of two runs on shared cores (it takes either sign over repeated runs of "
                  "this script); what chunking costs is the column outside the steps.")

@@ -8,7 +8,7 @@ import os
 import numpy as np
 
 from common import COMMON
-from common.ensembles import METRICS, band, mean_band, run_metrics, summary
+from common.ensembles import METRICS, mean_band, run_metrics
 from common.runs import chunks_cpu, load, loop_time, read_cost, run_logs
 from paper_scene import (COST_RANKS, DEFAULT_MEMBERS, STIFF_EPS_CHECK, STIFF_MEMBERS,
                          TABLE_S1_CYCLES, eps_check)
