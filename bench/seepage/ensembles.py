@@ -29,7 +29,7 @@ sys.path.insert(0, os.path.dirname(HERE))
 from common import out_dir    # noqa: E402
 from common.ensembles import (CYCLES, KEEP, METRICS, compare_ensembles, mean_band,    # noqa: E402
                               members, run_metrics, run_one)
-from common.runs import freeze_plugin, head_commit, prepare, read_cost, run_lmp    # noqa: E402
+from common.runs import chunks_cpu, freeze_plugin, head_commit, prepare, run_lmp    # noqa: E402
 
 WORK = "/work/runs/seepage_ensembles"
 MEMBERS = 4
@@ -99,11 +99,12 @@ def report(work, count):
              "porewater_analysis.original (analysis/README.md)." % (
                  head_commit(), work, CYCLES, KEEP[0], KEEP[-1]), ""]
     for name, (label, _) in ENSEMBLES.items():
-        cost = [read_cost(os.path.join(work, n)) for n in ens[name]]
-        cost = [c for c in cost if c]
+        # the completed chunks of every leg: a run stopped and continued counts its lost
+        # part once (the legs' cost.txt rows miss a killed leg)
+        cost = [chunks_cpu(os.path.join(work, n))[0] for n in ens[name]]
         if cost:
             lines.append("%s: %d runs, %.0f-%.0f CPU s each." % (
-                label, len(ens[name]), min(c[0] for c in cost), max(c[0] for c in cost)))
+                label, len(ens[name]), min(cost), max(cost)))
     lines += ["", "## Each ensemble: mean ± 95 % prediction band of one more run", "",
               "| metric | " + " | ".join("%s (%d)" % (ENSEMBLES[n][0], len(ens[n])) for n in ENSEMBLES)
               + " |", "|---|" + "---|" * len(ENSEMBLES)]
