@@ -8,8 +8,9 @@ In this order (both cores busy throughout), parameters fixed before any of the r
   stiff_eps0.07  members 0 and 1 of it at eps 0.07: the whole cycles against its band
   table_s1    Table S1 itself (-var full 1: 9,600 grains), TABLE_S1_CYCLES cycles on 2 ranks,
               from a bed packed and consolidated as the original's (log-normal radii 0.009)
-              with friction MU_TALL while packing at the reduced case's k_n, consolidated
-              again at Table S1's; eps 0.14 where the stiff preset's rule (eps_rule) says so,
+              with friction mu_prep while packing at the reduced case's k_n, consolidated
+              again at Table S1's (mu_prep: MU_TALL, or the bisection's below it where that
+              bed starts more than TARGET_TOL from the original run's count); eps 0.14 where the stiff preset's rule (eps_rule) says so,
               else 0.07; grain dumps every DUMP_CYCLES (the original's count checked on them)
   default     the default's ensemble again, DEFAULT_MEMBERS members (the original's count,
               coordination/original, is now rebuilt at each run's setup: compute
@@ -35,13 +36,15 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from common import out_dir, short    # noqa: E402
 from common.ensembles import AGAINST_PAPER, PERIOD, PERTURB, band, run_metrics, summary    # noqa: E402
+from common.beds import bed_geometry, bisect_mu_prep    # noqa: E402
 from common.runs import complete, freeze_plugin, load, prepare, run_example, run_lmp    # noqa: E402
 
 WORK = "/work/runs/paper_scene"
 CYCLES = short(4, 0.002)
 STIFF_MEMBERS, STIFF_EPS_CHECK, DEFAULT_MEMBERS = short((6, 2, 8), (2, 1, 2))
 TABLE_S1_CYCLES, TABLE_S1_PERIOD = 3, 5.0
-MU_TALL = 0.0444                 # bench/creep_factors/creep_factors_bisect.md: 4.61 by the original's count
+MU_TALL = 0.0444                 # bench/creep_factors/creep_factors_bisect.md: 4.61 by the original's
+                                 # count at the reduced case's k_n; the first probe of table_s1_friction
 SOFT_KN = 1.16e7                 # the Table S1 bed is packed at the reduced case's k_n
 DUMP_CYCLES = 0.25
 COST_CYCLES = short(0.05, 0.002)
@@ -116,27 +119,35 @@ def eps_rule(work):
     return 0.14, "eps 0.07 inside the band of eps 0.14 for %s" % ", ".join(k for k, *_ in rows)
 
 
-def table_s1_bed(work):
-    """the Table S1 bed (in.pack, in.consolidate at SOFT_KN, then at Table S1's k_n): its file"""
-    d = os.path.join(work, "table_s1_bed")
+def bed_folder(mu, name):
+    """work's folder of the Table S1 bed packed with mu (MU_TALL: the first, unsuffixed)"""
+    return name if mu == MU_TALL else "%s_mu%.4f" % (name, mu)
+
+
+def table_s1_bed(work, mu=MU_TALL, ranks=2):
+    """the Table S1 bed (in.pack with friction mu, in.consolidate at SOFT_KN, then at Table
+    S1's k_n): its file"""
+    d = os.path.join(work, bed_folder(mu, "table_s1_bed"))
     out = os.path.join(d, "bed.data")
     if os.path.exists(out):
         return out
     prepare(d)
-    common = {"full": 1, "mu_prep": MU_TALL}
+    common = {"full": 1, "mu_prep": mu}
     if not os.path.exists(os.path.join(d, "packed.data")):
-        run_lmp(d, "in.pack", dict(common, kn=SOFT_KN, output="packed.data"), ranks=2,
+        run_lmp(d, "in.pack", dict(common, kn=SOFT_KN, output="packed.data"), ranks=ranks,
                 log="log.pack")
     if not os.path.exists(os.path.join(d, "soft.data")):
         run_lmp(d, "in.consolidate", dict(common, kn=SOFT_KN, input="packed.data",
-                                          output="soft.data"), ranks=2, log="log.consolidate_soft")
+                                          output="soft.data"), ranks=ranks,
+                log="log.consolidate_soft")
     run_lmp(d, "in.consolidate", dict(common, input="soft.data", output="bed.data.new",
-                                      settle_time=0.05), ranks=2, log="log.consolidate")
+                                      settle_time=0.05), ranks=ranks, log="log.consolidate")
     os.replace(os.path.join(d, "bed.data.new"), out)
     return out
 
 
 TARGET_Z, TARGET_TOL = 4.58, 0.15   # the original run's count at t = 0.01 s; bisect beyond
+BISECT_ROUNDS = 2                   # of two probes each, 1 rank per probe, side by side
 
 
 def table_s1_row_steps(eps):
@@ -145,29 +156,61 @@ def table_s1_row_steps(eps):
     return 10 * round(TABLE_S1_PERIOD / (1000 * dt * 10))
 
 
-def table_s1_start(work, bed, eps):
+def table_s1_start(work, bed, eps, mu=MU_TALL, ranks=2):
     """the original's count on the Table S1 bed at t = 0.01 s (the original run's first row),
     from a run of two rows (its time series; Table S1's first rows are the same)"""
-    d = os.path.join(work, "table_s1_start")
+    d = os.path.join(work, bed_folder(mu, "table_s1_start"))
     path = os.path.join(d, "timeseries.txt")
     if not complete(path, 0.01):
         prepare(d)
         shutil.copy(bed, os.path.join(d, "bed.data"))
         run_lmp(d, "in.tidal_shear", {"full": 1, "data": "bed.data", "eps": eps,
-                                      "run_steps": 2 * table_s1_row_steps(eps)}, ranks=2)
+                                      "run_steps": 2 * table_s1_row_steps(eps)}, ranks=ranks)
     c = load(path)
     return float(c["coordination_original"][np.argmin(abs(c["time"] - 0.01))])
 
 
+def table_s1_probe(work, eps, mu, ranks=2):
+    """(mu, the original's count at t = 0.01 s, H, phi) of the Table S1 bed packed with mu"""
+    bed = table_s1_bed(work, mu, ranks)
+    height, phi = bed_geometry(bed)
+    return mu, table_s1_start(work, bed, eps, mu, ranks), height, phi
+
+
+def table_s1_friction(work, eps):
+    """mu_prep of the Table S1 bed: MU_TALL (the tall bed's, found at the reduced case's k_n)
+    if its bed starts within TARGET_TOL of the original run's count at Table S1's k_n, else
+    the probe nearest it of a bisection below MU_TALL (common.beds.bisect_mu_prep: the
+    count rises as the friction falls). Every probe is written to table_s1_probes.txt; None
+    if none is within TARGET_TOL."""
+    first = table_s1_probe(work, eps, MU_TALL)
+    probes = [first]
+    if abs(first[1] - TARGET_Z) > TARGET_TOL:
+        pool = ThreadPoolExecutor(2)
+        probes += bisect_mu_prep(work, lambda f, xs: list(pool.map(f, xs)), low=0.0,
+                                 high=MU_TALL, rounds=BISECT_ROUNDS, tol=TARGET_TOL,
+                                 target=TARGET_Z,
+                                 probe=lambda mu: table_s1_probe(work, eps, mu, ranks=1))
+    with open(os.path.join(work, "table_s1_probes.txt"), "w") as f:
+        f.write("# mu_prep  the original's count at t = 0.01 s (the original run %.2f)  H (m)  "
+                "phi\n" % TARGET_Z)
+        for row in sorted(probes):
+            f.write("%.4f %.4f %.4f %.4f\n" % row)
+    best = min(probes, key=lambda p: abs(p[1] - TARGET_Z))
+    for mu, z, _, _ in sorted(probes):
+        print("table_s1: mu_prep %.4f: the original's count at t = 0.01 s %.3f (the original "
+              "run %.2f)" % (mu, z, TARGET_Z), flush=True)
+    return best[0] if abs(best[1] - TARGET_Z) <= TARGET_TOL else None
+
+
 def table_s1(work, eps):
-    bed = table_s1_bed(work)
-    z = table_s1_start(work, bed, eps)
-    print("table_s1: the original's count at t = 0.01 s %.3f (the original run %.2f)" % (
-        z, TARGET_Z), flush=True)
-    if abs(z - TARGET_Z) > TARGET_TOL:
-        print("table_s1: not run: the bed misses the original's count by more than %.2f: "
-              "bisect mu_prep" % TARGET_TOL, flush=True)
+    mu = table_s1_friction(work, eps)
+    if mu is None:
+        print("table_s1: not run: no bed within %.2f of the original's count" % TARGET_TOL,
+              flush=True)
         return
+    print("table_s1: the bed packed with mu_prep %.4f" % mu, flush=True)
+    bed = table_s1_bed(work, mu)
     d = os.path.join(work, "table_s1")
     nout = table_s1_row_steps(eps)
     variables = {"full": 1, "data": "bed.data", "eps": eps, "cycles": TABLE_S1_CYCLES,

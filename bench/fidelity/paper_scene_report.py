@@ -352,6 +352,18 @@ def plot(per_cycle, bootstrap, path):
     plt.close(fig)
 
 
+def bed_probes(work):
+    """lines: the Table S1 beds packed with each friction (paper_scene.py table_s1_friction)
+    and the original's count each starts at"""
+    path = os.path.join(work, "table_s1_probes.txt")
+    if not os.path.exists(path):
+        return []
+    rows = np.loadtxt(path, ndmin=2)
+    return ["", "## The Table S1 bed: its friction while packing, at Table S1's k_n", "",
+            "| mu_prep | the original's count at t = 0.01 s (the original run 4.58) | H (m) | phi |",
+            "|---|---|---|---|"] + ["| %.4f | %.3f | %.4f | %.4f |" % tuple(r) for r in rows]
+
+
 def report(work, out):
     """bench/fidelity/paper_scene_results.md and paper_scene.png from the runs in work"""
     from common.runs import head_commit
@@ -380,6 +392,7 @@ def report(work, out):
               cost_text(work, ["default/" + m for m in default]),
               "- Table S1, %d cycles, 2 ranks: %s" % (TABLE_S1_CYCLES,
                                                       cost_text(work, ["table_s1"] if s1 else []))]
+    lines += bed_probes(work)
     if len(stiff) >= 3 and fine:
         lines += ["", "## The stiff preset's time step: ε 0.07 against its band at ε 0.14", ""]
         lines += eps_table(stiff, fine)
