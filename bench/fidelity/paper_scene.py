@@ -22,10 +22,13 @@ In this order (both cores busy throughout), parameters fixed before any of the r
 Usage (source scripts/env.sh first):
     /usr/bin/python3 bench/fidelity/paper_scene.py [--work DIR] [--only stiff,table_s1,...]
     /usr/bin/python3 bench/fidelity/paper_scene.py --only cost     # ~2 min, nothing else running
+    /usr/bin/python3 bench/fidelity/paper_scene.py --archive       # Table S1's time series into
+        bench/fidelity/table_s1/ (read: python3 -m porewater_analysis bench/fidelity/table_s1)
 The short setting (bench/smoke.py): CYCLES and the members shortened; table_s1 needs the
 9,600-grain bed's preparation and is not part of it.
 """
 import argparse
+import lzma
 import os
 import shutil
 import sys
@@ -219,6 +222,23 @@ def table_s1(work, eps):
     print("table_s1: %s" % ("done before" if cpu is None else "%.0f s CPU" % cpu), flush=True)
 
 
+ARCHIVE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "table_s1")
+
+
+def archive_table_s1(work, out=ARCHIVE):
+    """Table S1's time series (xz) and run parameters into out, where
+    `python3 -m porewater_analysis OUT` reads them (porewater_analysis.timeseries reads .xz)"""
+    d = os.path.join(work, "table_s1")
+    if not complete(os.path.join(d, "timeseries.txt"), TABLE_S1_CYCLES * TABLE_S1_PERIOD):
+        sys.exit("archive: Table S1's run in %s is not complete" % d)
+    os.makedirs(out, exist_ok=True)
+    with open(os.path.join(d, "timeseries.txt"), "rb") as src, \
+            lzma.open(os.path.join(out, "timeseries.txt.xz"), "wb", preset=9) as dst:
+        shutil.copyfileobj(src, dst)
+    shutil.copy(os.path.join(d, "checkpoint_params.txt"), out)
+    print("archive: %s" % ", ".join(sorted(os.listdir(out))), flush=True)
+
+
 def stiff_cost(work):
     """the stiff preset from its start for COST_CYCLES of a cycle on each of COST_RANKS, one
     after the other (the machine otherwise idle: the load is in each run's cost.txt)"""
@@ -236,7 +256,12 @@ def main():
     ap.add_argument("--only", default="stiff,table_s1,default")
     ap.add_argument("--report", action="store_true",
                     help="no runs: the tables from the runs in --work (paper_scene_results.md)")
+    ap.add_argument("--archive", action="store_true",
+                    help="no runs: Table S1's time series (xz) and parameters into %s" %
+                    os.path.relpath(ARCHIVE, os.path.dirname(os.path.dirname(ARCHIVE))))
     args = ap.parse_args()
+    if args.archive:
+        return archive_table_s1(args.work)
     if args.report:
         from paper_scene_report import report
         report(args.work, out_dir(os.path.dirname(os.path.abspath(__file__))))
