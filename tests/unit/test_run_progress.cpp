@@ -96,8 +96,9 @@ std::string read_all(const std::string &path)
 }    // namespace
 
 // A killed run wrote blocks at steps 0, 10, 20 and half of 30; continued from step 20, the
-// file keeps its header and the blocks of steps 0 and 10, and appends after them.
-TEST(RunProgress, ContinuedProfileKeepsTheBlocksBeforeTheRestart)
+// file keeps its header and the blocks of steps 0, 10 and 20 (the restart's step: written
+// by the run that wrote the restart file, not again), and appends after them.
+TEST(RunProgress, ContinuedProfileKeepsTheBlocksUpToTheRestart)
 {
   const std::string path = "pw_test_profile_continue.txt";
   const std::string header = "# fix d darcy/pressure: x-y averages\n# step time nlayers active_layers\n";
@@ -112,9 +113,9 @@ TEST(RunProgress, ContinuedProfileKeepsTheBlocksBeforeTheRestart)
   std::FILE *fp = continue_profile(path, 20, has_header);
   ASSERT_NE(fp, nullptr);
   EXPECT_TRUE(has_header);
-  std::fputs("20 again\n", fp);
+  std::fputs("30 again\n", fp);
   std::fclose(fp);
-  EXPECT_EQ(read_all(path), header + b0 + b10 + "20 again\n");
+  EXPECT_EQ(read_all(path), header + b0 + b10 + b20 + "30 again\n");
 
   // a torn block header line and a block missing rows are dropped too
   {

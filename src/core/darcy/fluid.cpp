@@ -93,7 +93,7 @@ DarcyFluid::DarcyFluid(const DarcySettings &settings, const GridGeom &geom, cons
     stencils_kept_(false), started_(false), last_fluid_step_(0), force_step_(-1),
     last_solve_{true, 0, 0.0, 0.0, -1}, porosity_warned_(false), unsettled_warned_(false),
     profile_(nullptr),
-    last_profile_step_(-1), last_vtk_step_(-1)
+    last_profile_step_(-1), last_vtk_step_(-1), restored_(false)
 {
   check_grid_fits(settings, copies);
   solver_.reset(new DarcySolver(geom, settings.params));
@@ -185,6 +185,10 @@ void DarcyFluid::setup(FluidHost &host, GrainBackend &grains, const GrainStep &n
     if (!has_header) write_profile_header(profile_, id_);
   }
   if (!started_) start(host, grains, now.step);
+  // the restart's step: its outputs are the run's that wrote the file, whose fluid step
+  // left the grains' mean velocity that the restart file does not hold
+  if (restored_) last_profile_step_ = last_vtk_step_ = now.step;
+  restored_ = false;
   apply_or_hold_force(host, grains, now.step, true);
   write_output(host, now.step, now.time);
 }
@@ -495,6 +499,7 @@ void DarcyFluid::restore(const std::vector<double> &state, int version)
                      std::to_string(expected) + " are needed (truncated or damaged)");
   last_fluid_step_ = (long long) s[6];
   started_ = s[7] != 0.0;
+  restored_ = true;
   last_solve_ = StepResult{s[8] != 0.0, (int) s[9], s[10], s[11], (int) s[12]};
   refresh_force_field();
   stencils_kept_ = false;

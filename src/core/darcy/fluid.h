@@ -166,6 +166,7 @@ class DarcyFluid {
   bool unsettled_warned_;    // solver relaxed: sweeps that did not settle, once per run
   std::FILE *profile_;
   long long last_profile_step_, last_vtk_step_;
+  bool restored_;            // restore() ran: the next setup's step wrote its outputs before
 };
 
 }    // namespace porewater

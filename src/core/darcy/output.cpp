@@ -63,7 +63,7 @@ std::FILE *continue_profile(const std::string &path, long long step, bool &has_h
         int nlayers = 0;
         if (!(head >> block_step >> time >> nlayers) || nlayers < 0) break;
         layers_left = nlayers;
-        keep = block_step < step;
+        keep = block_step <= step;
         block_start = kept.size();
       }
       if (keep) kept += line + "\n";

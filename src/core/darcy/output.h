@@ -19,8 +19,8 @@ void write_profile_header(std::FILE *fp, const std::string &fix_id);
 void write_profile(std::FILE *fp, const DarcySolver &solver, long long step, double time);
 
 // A profile file continued by a run that starts at `step` (`append yes`): keeps its comment
-// lines and the blocks of earlier steps (those a killed run wrote after its restart file
-// are dropped) and opens it for appending. Returns nullptr if it cannot be read or
+// lines and the blocks up to `step` (the run that wrote the restart file wrote the block of
+// its step; those a killed run wrote after it are dropped) and opens it for appending. Returns nullptr if it cannot be read or
 // rewritten; `has_header` tells whether the kept file already names its columns.
 std::FILE *continue_profile(const std::string &path, long long step, bool &has_header);
 
