@@ -10,8 +10,8 @@ In this order (both cores busy throughout), parameters fixed before any of the r
               from a bed packed and consolidated as the original's (log-normal radii 0.009)
               with friction mu_prep while packing at the reduced case's k_n, consolidated
               again at Table S1's (mu_prep: MU_TALL, or the bisection's below it where that
-              bed starts more than TARGET_TOL from the original run's count); eps 0.14 where the stiff preset's rule (eps_rule) says so,
-              else 0.07; grain dumps every DUMP_CYCLES (the original's count checked on them)
+              bed starts more than TARGET_TOL from the original run's count); eps 0.14
+              where the stiff preset's rule (eps_rule) says so, else 0.07; grain dumps every DUMP_CYCLES (the original's count checked on them)
   default     the default's ensemble again, DEFAULT_MEMBERS members (the original's count,
               coordination/original, is now rebuilt at each run's setup: compute
               coordination/original, doc)

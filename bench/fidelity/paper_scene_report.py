@@ -11,7 +11,7 @@ from common import COMMON
 from common.ensembles import METRICS, mean_band, run_metrics
 from common.runs import chunks_cpu, load, loop_time, read_cost, run_logs
 from paper_scene import (COST_RANKS, DEFAULT_MEMBERS, STIFF_EPS_CHECK, STIFF_MEMBERS,
-                         TABLE_S1_CYCLES, eps_check)
+                         TABLE_S1_CYCLES, TARGET_Z, eps_check)
 from porewater_analysis import original
 from porewater_analysis.cycles import original_data_file_metrics
 from porewater_analysis.dump import box_bounds, read_dump
@@ -360,7 +360,8 @@ def bed_probes(work):
         return []
     rows = np.loadtxt(path, ndmin=2)
     return ["", "## The Table S1 bed: its friction while packing, at Table S1's k_n", "",
-            "| mu_prep | the original's count at t = 0.01 s (the original run 4.58) | H (m) | phi |",
+            "| mu_prep | the original's count at t = 0.01 s (the original run %.2f) | H (m) | phi |"
+            % TARGET_Z,
             "|---|---|---|---|"] + ["| %.4f | %.3f | %.4f | %.4f |" % tuple(r) for r in rows]
 
 

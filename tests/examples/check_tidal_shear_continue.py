@@ -9,9 +9,10 @@ lines apart: a continued file says where it was continued), the profile file and
 checkpoint (every grain's state, the contacts' springs, every fix's state, the clock) equal
 byte for byte (with /kk: but for the capacity the KOKKOS contact history declares, which
 follows the largest partner count the process has seen), and the final state written by
-write_data. The same for a run that ends on a profile block's step and is continued from it. `--during-write`: the kill comes while a checkpoint is being written (the
-temporary file exists, not yet renamed): the continuation must start from the checkpoint
-before it and still end equal.
+write_data. The same for a run that ends on a profile block's step and is continued from
+it. `--during-write`: the kill comes while a checkpoint is being written (the temporary file
+exists, not yet renamed): the continuation must start from the checkpoint before it and
+still end equal.
 
 Usage: check_tidal_shear_continue.py --lmp LMP --plugin-dir DIR [--mode serial|np2|kk]
        [--mpirun MPIRUN] [--seeds N] [--during-write]
@@ -36,9 +37,15 @@ EXAMPLE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "
 # rebuilt its list) differs in the continued run on every other row from the kill on, and
 # failed 2 of 3 seeds here
 ROW_STEPS, CHUNK_STEPS = 120, 120
-PROFILE_STEPS = 6000    # the profile's blocks: a run that ends on one is continued from it
-RUN = ["-var", "run_steps", "12000", "-var", "samples", "10000", "-var", "checkpoint", "0.000257",
-       "-var", "write_state", "final"]
+RUN_STEPS, PROFILE_STEPS = 12000, 6000    # a run that ends on a profile block is continued from it
+
+
+def run_variables(steps=RUN_STEPS):
+    return ["-var", "run_steps", str(steps), "-var", "samples", "10000", "-var", "checkpoint",
+            "0.000257", "-var", "write_state", "final"]
+
+
+RUN = run_variables()
 
 
 def command(args, extra, run_vars=RUN):
@@ -63,7 +70,7 @@ def run(args, d, extra, log, run_vars=RUN):
     with open(os.path.join(d, log), "w") as out:
         p = subprocess.run(command(args, extra, run_vars), cwd=d, stdout=out, stderr=subprocess.STDOUT)
     if p.returncode != 0:
-        sys.exit(f"FAIL  {' '.join(command(args, extra))} in {d} exited {p.returncode}; "
+        sys.exit(f"FAIL  {' '.join(command(args, extra, run_vars))} in {d} exited {p.returncode}; "
                  f"see {log}:\n" + open(os.path.join(d, log)).read()[-3000:])
 
 
@@ -156,11 +163,11 @@ def main():
         duration = time.time() - began
         print(f"uninterrupted: {duration:.1f} s, {len(data_rows(os.path.join(ref, 'timeseries.txt')))} rows")
         if not args.during_write:
-            # the restart's step a profile block's (its grains' mean velocity is not in the
+            # the restart's step is a profile block's (the grains' mean velocity is not in the
             # restart file: the continued run must keep the block, not write it again)
             name = "at a profile block"
             d = fresh_dir(root, "profile_block")
-            run(args, d, [], "log.first", [("%d" % PROFILE_STEPS if a == "12000" else a) for a in RUN])
+            run(args, d, [], "log.first", run_variables(PROFILE_STEPS))
             run(args, d, ["-var", "continue", "1"], "log.continued")
             print(f"{name}: ran to step {PROFILE_STEPS}; continued from step "
                   f"{continued_from(d, 'log.continued')}")

@@ -20,8 +20,9 @@ void write_profile(std::FILE *fp, const DarcySolver &solver, long long step, dou
 
 // A profile file continued by a run that starts at `step` (`append yes`): keeps its comment
 // lines and the blocks up to `step` (the run that wrote the restart file wrote the block of
-// its step; those a killed run wrote after it are dropped) and opens it for appending. Returns nullptr if it cannot be read or
-// rewritten; `has_header` tells whether the kept file already names its columns.
+// its step; those a killed run wrote after it are dropped) and opens it for appending.
+// Returns nullptr if it cannot be read or rewritten; `has_header` tells whether the kept
+// file already names its columns.
 std::FILE *continue_profile(const std::string &path, long long step, bool &has_header);
 
 // Legacy ASCII VTK rectilinear grid (cell faces as coordinates) with the cell fields
