@@ -10,8 +10,8 @@ import numpy as np
 from common import COMMON
 from common.ensembles import METRICS, mean_band, run_metrics
 from common.runs import chunks_cpu, load, loop_time, read_cost, run_logs
-from paper_scene import (COST_RANKS, DEFAULT_MEMBERS, STIFF_EPS_CHECK, STIFF_MEMBERS,
-                         TABLE_S1_CYCLES, TARGET_Z, eps_check)
+from paper_scene import (COST_RANKS, DEFAULT_MEMBERS, ORIGINAL_MEMBERS, STIFF_EPS_CHECK,
+                         STIFF_MEMBERS, TABLE_S1_CYCLES, TARGET_Z, inside_band)
 from porewater_analysis import original
 from porewater_analysis.cycles import original_data_file_metrics
 from porewater_analysis.dump import box_bounds, read_dump
@@ -97,11 +97,12 @@ def front_table(s1, ensembles):
     return lines
 
 
-def eps_table(coarse, fine):
-    """paper_scene.eps_check as a table"""
-    lines = ["| metric | ε 0.14: mean ± 95 %% band of the mean of %d more (Bonferroni) | ε 0.07 "
-             "| their mean | inside |" % len(fine), "|---|---|---|---|---|"]
-    for key, mean, half, values, inside in eps_check(coarse, fine):
+def band_table(coarse, fine, coarse_label, fine_label):
+    """paper_scene.inside_band as a table"""
+    lines = ["| metric | %s: mean ± 95 %% band of the mean of %d more (Bonferroni) | %s "
+             "| their mean | inside |" % (coarse_label, len(fine), fine_label),
+             "|---|---|---|---|---|"]
+    for key, mean, half, values, inside in inside_band(coarse, fine):
         label, scale, f = LABEL[key]
         lines.append("| %s | %s ± %s | %s | %s | %s |" % (
             label, f % (scale * mean), f % (scale * half),
@@ -370,6 +371,7 @@ def report(work, out):
     from common.runs import head_commit
     stiff = ensemble_of(work, "stiff", STIFF_MEMBERS)
     fine = ensemble_of(work, "stiff_eps0.07", STIFF_EPS_CHECK)
+    numerics = ensemble_of(work, "stiff_original", ORIGINAL_MEMBERS)
     default = ensemble_of(work, "default", DEFAULT_MEMBERS)
     s1 = table_s1(work)
     lines = ["# The paper's numbers on its own scene: bench/fidelity/paper_scene.py --report", "",
@@ -389,6 +391,8 @@ def report(work, out):
               layout_cost_text(work),
               "- the stiff preset at ε 0.07: " +
               cost_text(work, ["stiff_eps0.07/" + m for m in fine]),
+              "- the stiff preset with the original's numerics: " +
+              cost_text(work, ["stiff_original/" + m for m in numerics]),
               "- the default, 4 cycles, 1 rank: " +
               cost_text(work, ["default/" + m for m in default]),
               "- Table S1, %d cycles, 2 ranks: %s" % (TABLE_S1_CYCLES,
@@ -396,7 +400,11 @@ def report(work, out):
     lines += bed_probes(work)
     if len(stiff) >= 3 and fine:
         lines += ["", "## The stiff preset's time step: ε 0.07 against its band at ε 0.14", ""]
-        lines += eps_table(stiff, fine)
+        lines += band_table(stiff, fine, "ε 0.14", "ε 0.07")
+    if len(stiff) >= 3 and numerics:
+        lines += ["", "## The original program's numerics at Table S1's stiffness (the stiff "
+                  "preset, -var original 1) against the stiff ensemble's band", ""]
+        lines += band_table(stiff, numerics, "the stiff preset", "`-var original 1`")
     runs = [("Table S1", os.path.join(work, "table_s1"), TABLE_S1_KEEP)] if s1 else []
     runs += [("stiff member%d" % k, os.path.join(work, "stiff", "member%d" % k), (2, 3, 4))
              for k in range(STIFF_MEMBERS) if "member%d" % k in stiff]
