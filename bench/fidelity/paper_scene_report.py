@@ -11,7 +11,8 @@ from common import COMMON
 from common.ensembles import METRICS, mean_band, run_metrics
 from common.runs import chunks_cpu, load, loop_time, read_cost, run_logs
 from paper_scene import (COST_RANKS, DEFAULT_MEMBERS, ORIGINAL_MEMBERS, STIFF_EPS_CHECK,
-                         STIFF_MEMBERS, TABLE_S1_CYCLES, TARGET_Z, inside_band)
+                         STIFF_MEMBERS, TABLE_S1_CYCLES, TABLE_S1_PERIOD, TARGET_Z,
+                         inside_band)
 from porewater_analysis import original
 from porewater_analysis.cycles import original_data_file_metrics
 from porewater_analysis.dump import box_bounds, read_dump
@@ -353,6 +354,43 @@ def plot(per_cycle, bootstrap, path):
     plt.close(fig)
 
 
+def count_against_data_file(work, path):
+    """lines and a figure: Table S1's count by the original's rules (coordination_original)
+    against the original run's own data file, row by row over the time both cover (the data
+    file's rows, every 0.01 s, matched to the nearest row of the run)"""
+    series = os.path.join(work, "table_s1", "timeseries.txt")
+    if not os.path.exists(series):
+        return []
+    c = load(series)
+    t_data, _, z_data = np.loadtxt(DATA_FILE, unpack=True)
+    inside = t_data <= c["time"][-1]
+    t_data, z_data = t_data[inside], z_data[inside]
+    after = np.searchsorted(c["time"], t_data).clip(1, len(c["time"]) - 1)
+    nearest = np.where(c["time"][after] - t_data < t_data - c["time"][after - 1], after, after - 1)
+    z_run = c["coordination_original"][nearest]
+    lines = ["| cycle | rows | the run's mean | the data file's mean | mean difference | rms "
+             "difference |", "|---|---|---|---|---|---|"]
+    for k in range(1, int(np.ceil(t_data[-1] / TABLE_S1_PERIOD)) + 1):
+        m = (t_data > (k - 1) * TABLE_S1_PERIOD) & (t_data <= k * TABLE_S1_PERIOD)
+        d = z_run[m] - z_data[m]
+        lines.append("| %d | %d | %.3f | %.3f | %+.3f | %.3f |" % (
+            k, m.sum(), z_run[m].mean(), z_data[m].mean(), d.mean(), np.sqrt(np.mean(d ** 2))))
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(11, 3.5))
+    ax.plot(t_data, z_data, color="k", lw=0.8, label="the original run (its data file)")
+    ax.plot(c["time"], c["coordination_original"], color="C0", lw=0.8,
+            label="Table S1 here (coordination_original)")
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel("coordination, the original's count")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return lines
+
+
 def bed_probes(work):
     """lines: the Table S1 beds packed with each friction (paper_scene.py table_s1_friction)
     and the original's count each starts at"""
@@ -426,6 +464,11 @@ def report(work, out):
                      "%.0f %% of the draws inside 6-11" % (len(boot), np.median(boot), lo, hi,
                                                            100 * share_inside(boot)))
     lines += [""] + table
+    count = count_against_data_file(work, os.path.join(out, "table_s1_count.png"))
+    if count:
+        lines += ["", "## Table S1's count by the original's rules against the original run's "
+                  "data file, row by row", ""] + count + [
+                  "", "![Table S1's count against the data file's](table_s1_count.png)"]
     if s1:
         lines += ["", "## The original's count on Table S1's dumps, counted again from the "
                   "positions", ""] + dump_check(os.path.join(work, "table_s1"))
