@@ -28,6 +28,13 @@ def complete(path, t_end):
         return False
 
 
+def nearest_rows(time, at):
+    """the index of the row of `time` (ascending) nearest each time in `at`"""
+    at = np.asarray(at, dtype=float)
+    after = np.searchsorted(time, at).clip(1, len(time) - 1)
+    return np.where(time[after] - at < at - time[after - 1], after, after - 1)
+
+
 def whole_cycles(t, period):
     """the forcing cycles a time series covers from t = 0 (to complete()'s 0.01 s)"""
     return int(np.floor((t[-1] + 0.01) / period))

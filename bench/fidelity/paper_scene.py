@@ -45,6 +45,7 @@ from common import out_dir, short    # noqa: E402
 from common.ensembles import AGAINST_PAPER, PERIOD, PERTURB, band, run_metrics, summary    # noqa: E402
 from common.beds import bed_geometry, bisect_mu_prep    # noqa: E402
 from common.runs import complete, freeze_plugin, load, prepare, run_example, run_lmp    # noqa: E402
+from porewater_analysis.timeseries import nearest_rows    # noqa: E402
 
 WORK = "/work/runs/paper_scene"
 CYCLES = short(4, 0.002)
@@ -181,7 +182,7 @@ def table_s1_start(work, bed, eps, mu=MU_TALL, ranks=2):
         run_lmp(d, "in.tidal_shear", {"full": 1, "data": "bed.data", "eps": eps,
                                       "run_steps": 2 * table_s1_row_steps(eps)}, ranks=ranks)
     c = load(path)
-    return float(c["coordination_original"][np.argmin(abs(c["time"] - 0.01))])
+    return float(c["coordination_original"][nearest_rows(c["time"], 0.01)])
 
 
 def table_s1_probe(work, eps, mu, ranks=2):

@@ -17,7 +17,7 @@ from porewater_analysis import original
 from porewater_analysis.cycles import original_data_file_metrics
 from porewater_analysis.dump import box_bounds, read_dump
 from porewater_analysis.report import parameters
-from porewater_analysis.timeseries import run_parameters
+from porewater_analysis.timeseries import nearest_rows, run_parameters
 
 DATA_FILE = os.path.join(COMMON, "original_run_contacts.txt")
 PAPER_N = (6.0, 11.0)
@@ -269,7 +269,7 @@ def dump_check(d, data="bed.data"):
              "column | the time series |", "|---|---|---|---|---|"]
     for path in dumps:
         step = int(path.split("_")[-1].split(".")[0])
-        row = int(np.argmin(abs(series["time"] - step * dt)))
+        row = int(nearest_rows(series["time"], step * dt))
         if abs(series["time"][row] - step * dt) > 0.5 * dt:     # no row at that step (0)
             continue
         recount, column = count_as_the_original(path, fixed)
@@ -357,7 +357,9 @@ def plot(per_cycle, bootstrap, path):
 def count_against_data_file(work, path):
     """lines and a figure: Table S1's count by the original's rules (coordination_original)
     against the original run's own data file, row by row over the time both cover (the data
-    file's rows, every 0.01 s, matched to the nearest row of the run)"""
+    file's rows, every 0.01 s, matched to the nearest row of the run). Both are the original's
+    count: pairs overlapping, none across a periodic boundary or with a fixed grain, over all
+    grains (python/sphere.py lines 4885-4906; compute coordination/original, group all)"""
     series = os.path.join(work, "table_s1", "timeseries.txt")
     if not os.path.exists(series):
         return []
@@ -365,9 +367,7 @@ def count_against_data_file(work, path):
     t_data, _, z_data = np.loadtxt(DATA_FILE, unpack=True)
     inside = t_data <= c["time"][-1]
     t_data, z_data = t_data[inside], z_data[inside]
-    after = np.searchsorted(c["time"], t_data).clip(1, len(c["time"]) - 1)
-    nearest = np.where(c["time"][after] - t_data < t_data - c["time"][after - 1], after, after - 1)
-    z_run = c["coordination_original"][nearest]
+    z_run = c["coordination_original"][nearest_rows(c["time"], t_data)]
     lines = ["| cycle | rows | the run's mean | the data file's mean | mean difference | rms "
              "difference |", "|---|---|---|---|---|---|"]
     for k in range(1, int(np.ceil(t_data[-1] / TABLE_S1_PERIOD)) + 1):
