@@ -55,7 +55,8 @@ def table_s1(work):
     if pooled is None:
         return None
     per = [run_metrics(work, "table_s1", cycles=TABLE_S1_CYCLES, keep=(k,)) for k in keep]
-    return {key: [m.get(key) for m in per] for key in pooled}, pooled
+    keys = set(pooled).union(*per)      # a fit that fails is a key missing: keep the others'
+    return {key: [m.get(key) for m in per] for key in keys}, pooled
 
 
 def data_file_cycles(keep=TABLE_S1_KEEP):
@@ -69,7 +70,8 @@ def data_file_cycles(keep=TABLE_S1_KEEP):
 
 def cell(values, key):
     _, scale, f = LABEL[key]
-    return " / ".join("none" if v is None else f % (scale * v) for v in values)
+    missing = "no fit" if key in ("n", "n_original") else "none"
+    return " / ".join(missing if v is None else f % (scale * v) for v in values)
 
 
 def front_table(s1, ensembles):
@@ -107,7 +109,8 @@ def band_table(coarse, fine, coarse_label, fine_label):
         label, scale, f = LABEL[key]
         lines.append("| %s | %s ± %s | %s | %s | %s |" % (
             label, f % (scale * mean), f % (scale * half),
-            ", ".join(f % (scale * v) for v in values), f % (scale * values.mean()),
+            ", ".join([f % (scale * v) for v in values] +    # a run without it: its fit failed
+                      ["no fit"] * (len(fine) - len(values))), f % (scale * values.mean()),
             "yes" if inside else "**no**"))
     return lines
 
@@ -280,6 +283,12 @@ def dump_check(d, data="bed.data"):
 
 # ---- the page ---------------------------------------------------------------------------------
 
+def value_range(values, f="%.0f"):
+    """'low-high' of values as f writes them, one value where they print alike"""
+    low, high = f % min(values), f % max(values)
+    return low if low == high else low + "-" + high
+
+
 def cost_text(work, folders):
     """CPU s per run (its chunks over all its legs: common.runs.chunks_cpu) and µs per step of
     the runs of `folders` (the complete ones: the callers pass those)"""
@@ -287,9 +296,8 @@ def cost_text(work, folders):
     costs = [c for c in costs if c[1]]
     if not costs:
         return "no runs"
-    return "%.0f-%.0f CPU s per run, %.0f-%.0f µs per step" % (
-        min(c[0] for c in costs), max(c[0] for c in costs),
-        min(1e6 * c[0] / c[1] for c in costs), max(1e6 * c[0] / c[1] for c in costs))
+    return "%s CPU s per run, %s µs per step" % (
+        value_range([c[0] for c in costs]), value_range([1e6 * c[0] / c[1] for c in costs]))
 
 
 def layout_cost_text(work):
@@ -421,7 +429,8 @@ def report(work, out):
              "data file's values stand under the original's estimators only." % (
                  head_commit(), work), ""]
     lines += front_table(s1, [("the stiff preset", stiff), ("the default", default)])
-    lines += ["", "## Costs (CPU s of each run's chunks as LAMMPS reports them: loop time x CPU use; "
+    lines += ["", "## Costs (CPU s of each run's chunks as LAMMPS reports them: loop time x CPU use x "
+              "MPI tasks, so a run on 2 ranks counts both; "
               "the runs shared the 2 cores with others)", "",
               "- the stiff preset, 4 cycles, 1 rank (two runs side by side): " +
               cost_text(work, ["stiff/" + m for m in stiff]),
