@@ -68,10 +68,14 @@ def data_file_cycles(keep=TABLE_S1_KEEP):
             "z_min_after_original": [m["z_min_phase"][i] for i in at]}
 
 
+def missing(key):
+    """what a run without a value of `key` shows: run_metrics drops n where the fit failed"""
+    return "no fit" if key in ("n", "n_original") else "none"
+
+
 def cell(values, key):
     _, scale, f = LABEL[key]
-    missing = "no fit" if key in ("n", "n_original") else "none"
-    return " / ".join(missing if v is None else f % (scale * v) for v in values)
+    return " / ".join(missing(key) if v is None else f % (scale * v) for v in values)
 
 
 def front_table(s1, ensembles):
@@ -109,8 +113,8 @@ def band_table(coarse, fine, coarse_label, fine_label):
         label, scale, f = LABEL[key]
         lines.append("| %s | %s ± %s | %s | %s | %s |" % (
             label, f % (scale * mean), f % (scale * half),
-            ", ".join([f % (scale * v) for v in values] +    # a run without it: its fit failed
-                      ["no fit"] * (len(fine) - len(values))), f % (scale * values.mean()),
+            ", ".join([f % (scale * v) for v in values] +
+                      [missing(key)] * (len(fine) - len(values))), f % (scale * values.mean()),
             "yes" if inside else "**no**"))
     return lines
 
