@@ -122,7 +122,7 @@ def entries(plugin):
          ["{pages}/checkpoint_cost/checkpoint_cost_results.md"], None),
         ("gpu: the GPU check's dry run (KOKKOS host backend)", "gpu/gpu_check.py",
          ["--out", "{pages}/gpu", "--work", "{work}", "--accel", "-k on t 1 -sf kk",
-          "--parts", "cycle,table_s1"],
+          "--parts", "cycle,table_s1,fluid_step"],
          ["{pages}/gpu/summary.md", "{pages}/gpu/gpu_check.json"], kk),
         ("pair: against gran/hooke/history, dense beds", "pair/pair_bench.py",
          ["--scene", "bed", "--steps", "20", "--repeat", "1"], [], None),

@@ -20,6 +20,9 @@ cmake -S "$REPO" -B "$REPO/build-core" -G Ninja -D CMAKE_BUILD_TYPE=Release \
   -D CMAKE_CXX_COMPILER_LAUNCHER=ccache -D PW_HOSTS=none >/dev/null
 cmake --build "$REPO/build-core" -j "${PW_JOBS:-$(nproc)}"
 (cd "$REPO/build-core" && ctest --output-on-failure -j "${PW_TEST_JOBS:-2}" --timeout 900)
+# the core's tests again under AddressSanitizer + UndefinedBehaviorSanitizer (seconds; the
+# plugin's sanitizer run and Kokkos' bounds check are scripts of their own: doc/install.md)
+bash "$REPO/scripts/sanitize.sh" core
 if [[ $layers == *" lammps "* ]]; then
   for host in $(pw_hosts); do
     pw_select_host "$host"

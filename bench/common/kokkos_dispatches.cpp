@@ -4,9 +4,16 @@
 // (bench/gpu/gpu_check.py). To time a kernel alone it waits for the device before and after
 // it (cuCtxSynchronize from the driver already loaded, when there is one): the run is
 // slower, its shares are the kernels'.
+// With $KDISPATCH_OUT set it records instead how long the host spends in each dispatch,
+// without waiting for the device (bench/gpu/gpu_check.py, part fluid_step): on a GPU a
+// launch returns in microseconds unless it waits, as a launch object copied to constant
+// memory waits for the last kernel that used it; on a host backend the dispatch runs the
+// kernel itself. Deep copies during a fluid step (below) are counted under "fluid deep_copy".
 // Preloaded as well (LD_PRELOAD=this.so), it counts LAMMPS' AtomKokkos::sync and ::modified
 // calls by caller, space and mask into $KSYNC_OUT: on a host backend, where every space is
-// the host and no copy happens, the calls that would move atom arrays on a GPU.
+// the host and no copy happens, the calls that would move atom arrays on a GPU. Those made
+// during a fluid step of fix darcy/pressure/kk (from its deposit kernel to its force
+// kernel) are counted again under the prefix "fluid ".
 //   g++ -O2 -shared -fPIC -o kokkos_dispatches.so kokkos_dispatches.cpp -ldl
 #include <cxxabi.h>
 #include <dlfcn.h>
@@ -27,6 +34,10 @@ std::map<std::string, long> counts;
 std::map<std::string, Tally> times;    // "for NAME", "reduce NAME", "scan NAME", "deep_copy DST <- SRC"
 long nfor = 0, nreduce = 0, nscan = 0, ncopy = 0, nfence = 0;
 bool timing = false;
+bool dispatch_timing = false;    // KDISPATCH_OUT: the host's time in each dispatch, no waits
+std::map<std::string, Tally> dispatch_times;
+std::string dispatch_name;
+std::chrono::steady_clock::time_point dispatch_start;
 int (*device_sync)() = nullptr;    // CUresult cuCtxSynchronize(void), none on host backends
 struct Open {
   std::string key;
@@ -80,9 +91,27 @@ void end(uint64_t id)
 extern "C" void kokkosp_init_library(int, uint64_t, uint32_t, void *)
 {
   timing = getenv("KTIMES_OUT") != nullptr;
+  dispatch_timing = !timing && getenv("KDISPATCH_OUT") != nullptr;
 }
 namespace {
-std::map<std::string, long> atom_calls;    // "sync|modified SPACE MASK CALLER"
+void begin_dispatch(const char *kind, const char *name)
+{
+  if (!dispatch_timing) return;
+  dispatch_name = std::string(kind) + " " + name;
+  dispatch_start = std::chrono::steady_clock::now();
+}
+void end_dispatch()
+{
+  if (!dispatch_timing || dispatch_name.empty()) return;
+  Tally &t = dispatch_times[dispatch_name];
+  ++t.calls;
+  t.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - dispatch_start).count();
+  dispatch_name.clear();
+}
+}    // namespace
+namespace {
+std::map<std::string, long> atom_calls;    // "[fluid ]sync|modified SPACE MASK CALLER"
+bool in_fluid_step = false;    // between darcy/pressure's deposit and force kernels
 
 // the function that called from `address` (demangled, its arguments dropped)
 std::string caller_of(void *address)
@@ -101,7 +130,9 @@ void count_atom_call(const char *what, int space, unsigned mask, void *caller)
   static const char *spaces[] = {"Host", "Device"};
   char head[64];
   snprintf(head, sizeof(head), "%s %s 0x%x ", what, space == 0 || space == 1 ? spaces[space] : "?", mask);
-  ++atom_calls[head + caller_of(caller)];
+  const std::string key = head + caller_of(caller);
+  ++atom_calls[key];
+  if (in_fluid_step) ++atom_calls["fluid " + key];
 }
 }    // namespace
 
@@ -132,6 +163,12 @@ extern "C" void kokkosp_finalize_library()
   fprintf(f, "for %ld reduce %ld scan %ld deep_copy %ld fence %ld\n", nfor, nreduce, nscan, ncopy, nfence);
   for (auto &kv : counts) fprintf(f, "%ld %s\n", kv.second, kv.first.c_str());
   fclose(f);
+  if (dispatch_timing) {
+    FILE *d = fopen(getenv("KDISPATCH_OUT"), "w");
+    fprintf(d, "# seconds calls kind name (the host's time in the dispatch call, no waits)\n");
+    for (auto &kv : dispatch_times) fprintf(d, "%.6f %ld %s\n", kv.second.seconds, kv.second.calls, kv.first.c_str());
+    fclose(d);
+  }
   if (!timing) return;
   FILE *t = fopen(getenv("KTIMES_OUT"), "w");
   fprintf(t, "# seconds calls kind name (waited for the device: %s)\n", device_sync ? "yes" : "no");
@@ -140,18 +177,31 @@ extern "C" void kokkosp_finalize_library()
 }
 extern "C" void kokkosp_begin_parallel_for(const char *n, uint32_t, uint64_t *k)
 {
+  const std::string name = n;
+  if (name == "darcy/pressure:deposit") in_fluid_step = true;
+  if (name == "darcy/pressure:force") in_fluid_step = false;
   ++nfor;
   ++counts[n];
+  begin_dispatch("for", n);
   *k = begin("for", n);
 }
-extern "C" void kokkosp_end_parallel_for(uint64_t k) { end(k); }
+extern "C" void kokkosp_end_parallel_for(uint64_t k)
+{
+  end(k);
+  end_dispatch();
+}
 extern "C" void kokkosp_begin_parallel_reduce(const char *n, uint32_t, uint64_t *k)
 {
   ++nreduce;
   ++counts[n];
+  begin_dispatch("reduce", n);
   *k = begin("reduce", n);
 }
-extern "C" void kokkosp_end_parallel_reduce(uint64_t k) { end(k); }
+extern "C" void kokkosp_end_parallel_reduce(uint64_t k)
+{
+  end(k);
+  end_dispatch();
+}
 extern "C" void kokkosp_begin_parallel_scan(const char *n, uint32_t, uint64_t *k)
 {
   ++nscan;
@@ -176,6 +226,7 @@ extern "C" void kokkosp_begin_deep_copy(SpaceHandle, const char *dst, const void
                                         const char *src, const void *, uint64_t)
 {
   ++ncopy;
+  if (in_fluid_step) ++counts[std::string("fluid deep_copy ") + dst + " <- " + src];
   copy_region = timing ? begin("deep_copy", (std::string(dst) + " <- " + src).c_str()) : UINT64_MAX;
 }
 extern "C" void kokkosp_end_deep_copy()

@@ -6,6 +6,7 @@ import glob
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -26,11 +27,16 @@ KOKKOS_DISPATCHES = os.path.join(COMMON, "kokkos_dispatches.cpp")  # Kokkos prof
 FRICTIONLESS = {"bed": "frictionless"}
 
 
+class RunTimeout(Exception):
+    """a run stopped at its deadline (run_lmp's `deadline`)"""
+
+
 def run_lmp(workdir, infile, variables, ranks=1, plugin_dir=None, log="log.lammps", args=(),
-            threads=1, extra_env=None, launcher=()):
+            threads=1, extra_env=None, launcher=(), deadline=None):
     """lmp -in infile in workdir (niced; `threads` OpenMP threads, extra lmp `args` such as
     KOKKOS' -k on t 2 -sf kk, `extra_env` added to its environment, `launcher` a command it
-    runs under, such as a profiler); returns its CPU seconds."""
+    runs under, such as a profiler); returns its CPU seconds. `deadline` (time.time()): the
+    run is killed there and RunTimeout raised."""
     # OMP_PROC_BIND (scripts/env.sh: spread) pins a 1-thread run to core 0: concurrent runs
     # would share that core
     env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND="false",
@@ -46,9 +52,17 @@ def run_lmp(workdir, infile, variables, ranks=1, plugin_dir=None, log="log.lammp
         cmd += ["-var", k, str(v)]
     # numpy's OpenMP runtime binds this very process under OMP_PROC_BIND=spread (to core 0),
     # and children inherit that mask: the runs of a pool would share one core
-    proc = subprocess.Popen(cmd, cwd=workdir, env=env,
+    proc = subprocess.Popen(cmd, cwd=workdir, env=env, start_new_session=deadline is not None,
                             preexec_fn=lambda: os.sched_setaffinity(0, range(os.cpu_count())))
-    _, status, usage = os.wait4(proc.pid, 0)
+    while True:
+        pid, status, usage = os.wait4(proc.pid, os.WNOHANG if deadline else 0)
+        if pid:
+            break
+        if time.time() > deadline:
+            os.killpg(proc.pid, signal.SIGKILL)
+            os.wait4(proc.pid, 0)
+            raise RunTimeout(" ".join(cmd))
+        time.sleep(0.2)
     if status != 0:
         raise subprocess.CalledProcessError(status, cmd)
     return usage.ru_utime + usage.ru_stime

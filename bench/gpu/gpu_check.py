@@ -25,6 +25,16 @@ order they matter (the default order; the summary is written after each):
   growth    the reduced example tiled 1, 2, 4, 8 times per side (1,200 to 614,400 grains;
             common.beds.tiled) with ACCEL: us per step and grain-steps per second
             (the goal at 614,400: at least GOAL_GRAIN_STEPS)
+  fluid_step  what a fluid step of fix darcy/pressure/kk asks of the host, on the reduced
+            example and the Table S1-sized scene (-var fast 1, FLUID_STEPS steps with ACCEL):
+            per fluid step, the deep copies between its deposit and force kernels (the grid's
+            deposits up and force field down are expected; an atom array is not) and LAMMPS'
+            atom syncs to the host there, by caller; and per kernel the host's time in its
+            dispatch without waiting for the device (bench/common/kokkos_dispatches.cpp,
+            KDISPATCH_OUT): on a GPU microseconds, unless the launch waits, as a launch object
+            copied to constant memory does (the package's kernels are asserted to pass theirs
+            as a kernel argument when the kit compiles: src/lammps/kokkos_grains.h); on a
+            host backend the dispatch runs the kernel, so there it says nothing of launches
   cycle     the reduced example's first CYCLE_FRACTION cycle on the CPU, on the CPU with tau
             one ulp higher, on the CPU with the bed's grains displaced by up to DISPLACEMENT,
             and twice with ACCEL: the time series agree when max |accel - cpu| over it is at
@@ -32,8 +42,12 @@ order they matter (the default order; the summary is written after each):
             again; common.ensembles.spread_agreement); the cost per step of each
 Writes OUT/summary.md (the tables), OUT/gpu_check.json (every number), OUT/kernel_times.txt,
 OUT/logs.tar.gz (the runs' logs and time series) and OUT/machine.txt; exits 1 when a
-round-off check fails. The short setting (bench/smoke.py): every part a few hundred steps,
-the growth 1,200 and 9,600 grains only.
+round-off check fails. --time-limit S (default TIME_LIMIT): a run still going S seconds
+after the start is killed, the parts after it are not started, and the summary says where
+it stopped (exit 0 unless a check that ran failed): a device call keeps what ran. The
+default parts take the Table S1-sized scene and the reduced example within it on an H200;
+growth last. The short setting (bench/smoke.py): every part a few hundred steps, the
+growth 1,200 and 9,600 grains only.
 
     tar -xJf gpu_kit.tar.xz && python3 bench/gpu/gpu_check.py --kit gpu_kit --out "$OUT"
                                                                    (on the device machine)
@@ -59,7 +73,7 @@ from common import short    # noqa: E402
 from common.beds import SCENES, prepare_scene, tiled    # noqa: E402
 from common.ensembles import PERTURB as DISPLACEMENT    # noqa: E402  (the ensembles' perturbation, m)
 from common.ensembles import SPREAD_FACTOR, perturbation, spread_agreement    # noqa: E402
-from common.runs import KOKKOS_DISPATCHES, loop_time, run_lmp    # noqa: E402
+from common.runs import KOKKOS_DISPATCHES, RunTimeout, loop_time, run_lmp    # noqa: E402
 from kokkos_step_counts import per_step, read_run    # noqa: E402
 from porewater_analysis.dump import read_dump    # noqa: E402
 from porewater_analysis.timeseries import load as load_series    # noqa: E402
@@ -77,6 +91,10 @@ NEIGH_EVERY = 25              # the neighbour list's distance check every N step
 EVERY_RUN = {"neigh_every": NEIGH_EVERY}    # -var settings of every run
 GOAL_S1_US = 100.0            # us per step of the Table S1-sized scene, outputs on
 GOAL_GRAIN_STEPS = 3e8        # grain-steps per second at 614,400 grains
+FLUID_STEPS = short(1000, 100)    # steps of the fluid_step part (a fluid step every 25)
+TIME_LIMIT = 480.0            # s: --time-limit, 8 minutes of a device call
+DEADLINE = [None]             # time.time() at which runs are stopped (main sets it)
+WAITED_US = 20.0              # us: a dispatch that long on a GPU's host waited for something
 
 
 def use_kit(kit):
@@ -107,7 +125,7 @@ def run(work, name, variables, accel, extra_env=None, edits=()):
         open(path, "w").write(text)
     try:
         run_lmp(d, "in.tidal_shear", variables, args=shlex.split(accel), threads=accel_threads(accel),
-                extra_env=extra_env)
+                extra_env=extra_env, deadline=DEADLINE[0])
     except subprocess.CalledProcessError as e:
         log = os.path.join(d, "log.lammps")
         sys.exit("run %s failed (%s):\n%s" % (name, " ".join(e.cmd), open(log).read()[-3000:]
@@ -215,6 +233,49 @@ def part_table_s1(work, accel, hook, out, results):
                            "roundoff": dx_check(cpu["dir"], acc["dir"], ulp["dir"], perturbed, again["dir"])}
 
 
+def read_counts(path):
+    """{key: count} of a hook file's 'COUNT KEY' lines"""
+    rows = {}
+    for line in open(path) if os.path.exists(path) else ():
+        count, _, key = line.rstrip("\n").partition(" ")
+        if count.isdigit():
+            rows[key] = rows.get(key, 0) + int(count)
+    return rows
+
+
+def fluid_step_counts(work, name, scene, accel, hook):
+    """per fluid step: deep copies and atom syncs to the host during it; per kernel: the
+    host's time in its dispatch (us per call)"""
+    d = os.path.join(work, name)
+    files = {k: os.path.join(work, "%s_%s.txt" % (name, k)) for k in ("count", "sync", "dispatch")}
+    env = {"KOKKOS_PROFILE_LIBRARY": hook, "LD_PRELOAD": hook, "KCOUNT_OUT": files["count"],
+           "KSYNC_OUT": files["sync"], "KDISPATCH_OUT": files["dispatch"]}
+    r = run(work, name, dict(scene, run_steps=FLUID_STEPS, fast=1), accel, extra_env=env)
+    counts, syncs = read_counts(files["count"]), read_counts(files["sync"])
+    fluid_steps = counts.get("darcy/pressure:deposit", 0)
+    per = max(fluid_steps, 1)
+    copies = {k[len("fluid deep_copy "):]: n / per for k, n in counts.items()
+              if k.startswith("fluid deep_copy ")}
+    host_syncs = {}
+    for key, n in syncs.items():
+        words = key.split(" ")
+        if words[0] == "fluid" and words[1] == "sync" and words[2] == "Host" and int(words[3], 16):
+            caller = " ".join(words[4:])
+            host_syncs[caller] = host_syncs.get(caller, 0.0) + n / per
+    dispatch = [(name_, 1e6 * float(sec) / int(calls), int(calls)) for sec, calls, name_ in
+                (line.rstrip("\n").split(" ", 2) for line in open(files["dispatch"])
+                 if not line.startswith("#"))] if os.path.exists(files["dispatch"]) else []
+    return {"steps": r["steps"], "fluid_steps": fluid_steps, "copies": copies,
+            "host_syncs": host_syncs, "dispatch_us": sorted(dispatch, key=lambda t: -t[1])}
+
+
+def part_fluid_step(work, accel, hook, results):
+    results["fluid_step"] = {
+        "reduced example": fluid_step_counts(work, "fluid_reduced", {}, accel, hook),
+        "Table S1-sized scene": fluid_step_counts(work, "fluid_table_s1", SCENES["table_s1"][1],
+                                                  accel, hook)}
+
+
 def part_growth(work, accel, results):
     rows = []
     for copies, steps in GROWTH_STEPS.items():
@@ -299,6 +360,29 @@ def summary(results, accel):
                 "at most %.0f us per step: **%s**" % (GOAL_S1_US, "yes" if s["goal_met"] else "NO"), ""]
         out += counts_table(s["counts"])
         out += ["Round-off, as above, on this scene:", ""] + dx_table(s["roundoff"])
+    if "fluid_step" in results:
+        out += ["## A fluid step (-var fast 1: one every 25 steps), with `%s`" % accel, "",
+                "Per fluid step, between fix darcy/pressure/kk's deposit and force kernels: the "
+                "deep copies (the grid's deposits up and its force field down are expected), and "
+                "LAMMPS' atom syncs to the host by caller (on a GPU each copies atom arrays down; "
+                "on a host backend the kernels' own syncs are to the host too). Then each kernel's "
+                "dispatch as the host spends it, without waiting: on a GPU above %.0f us it waited "
+                "(a launch object through constant memory, a reduction into a host value); on a "
+                "host backend the dispatch runs the kernel." % WAITED_US, ""]
+        for label, f in results["fluid_step"].items():
+            out += ["**%s**: %d fluid steps in %d steps." % (label, f["fluid_steps"], f["steps"]), "",
+                    "| per fluid step | deep copy (to <- from) |", "|---|---|"]
+            out += ["| %.2f | %s |" % (n, k[:110]) for k, n in sorted(f["copies"].items())] or ["| 0 | none |"]
+            out += ["", "| per fluid step | atom sync to the host, by caller |", "|---|---|"]
+            out += ["| %.2f | %s |" % (n, k[:110]) for k, n in sorted(f["host_syncs"].items())] or \
+                ["| 0 | none |"]
+            out += ["", "| us per dispatch | calls | kernel (those of every fluid step or more) |",
+                    "|---|---|---|"]
+            out += ["| %.1f | %d | %s |" % (us, n, k[:100]) for k, us, n in f["dispatch_us"]
+                    if n >= f["fluid_steps"]][:15]
+            out.append("")
+    if results.get("stopped"):
+        out += ["**Stopped at the time limit**: %s" % results["stopped"], ""]
     if "growth" in results:
         g = results["growth_goal"]
         out += ["## Growth (the reduced example tiled; -var fast 1)", "",
@@ -363,10 +447,13 @@ def main():
     ap.add_argument("--out", required=True, help="where summary.md and the rest go")
     ap.add_argument("--work", help="the runs' folder (default OUT/../gpu_check_runs)")
     ap.add_argument("--accel", default=GPU_ACCEL, help="lmp's accelerator arguments (%(default)s)")
-    ap.add_argument("--parts", default="roundoff,table_s1,growth,cycle")
+    ap.add_argument("--parts", default="roundoff,table_s1,fluid_step,cycle,growth")
+    ap.add_argument("--time-limit", type=float, default=TIME_LIMIT,
+                    help="seconds after which runs stop and the summary is written (%(default)s)")
     ap.add_argument("--neigh-every", type=int, default=NEIGH_EVERY,
                     help="-var neigh_every of every run (%(default)s)")
     args = ap.parse_args()
+    DEADLINE[0] = time.time() + args.time_limit
     EVERY_RUN["neigh_every"] = args.neigh_every
     kit = os.path.abspath(args.kit) if args.kit else None
     out = os.path.abspath(args.out)
@@ -385,10 +472,17 @@ def main():
     parts = {"roundoff": lambda: part_roundoff(work, args.accel, results),
              "cycle": lambda: part_cycle(work, args.accel, results),
              "table_s1": lambda: part_table_s1(work, args.accel, hook, out, results),
+             "fluid_step": lambda: part_fluid_step(work, args.accel, hook, results),
              "growth": lambda: part_growth(work, args.accel, results)}
     for name in args.parts.split(","):
         t0 = time.time()
-        parts[name]()
+        try:
+            parts[name]()
+        except RunTimeout as e:
+            results["stopped"] = "in part %s, %.0f s after the start (--time-limit %.0f): %s" % (
+                name, time.time() - DEADLINE[0] + args.time_limit, args.time_limit, e)
+            print(results["stopped"], flush=True)
+            break
         results["seconds"][name] = time.time() - t0
         print("part %s: %.0f s" % (name, results["seconds"][name]), flush=True)
         write_outputs(results, args.accel, out, work)    # a run cut short keeps what it has

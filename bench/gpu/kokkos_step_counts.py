@@ -14,6 +14,15 @@ into a host scalar waits for the device. A sync whose mask is 0 does nothing any
 
     source scripts/env.sh; /usr/bin/python3 bench/gpu/kokkos_step_counts.py --work DIR \\
         [--var NAME VALUE ...] [--label TEXT] [--markdown OUT.md]
+
+`--fluid-step-check`: what a fluid step of fix darcy/pressure/kk (its deposit kernel to its
+force kernel) asks of the host: the example with -var fast 1 for 300 steps (12 fluid
+steps), its atom syncs during fluid steps by caller. A sync that brings atom arrays to the
+host for a host-side evaluation (the fixes' sync_for_variables, called before their top,
+ztop, bottom or stress variables are evaluated) copies them down on a GPU; the kernels' own
+syncs are to their execution space (on this backend the host too). Fails unless the example as shipped (`variables global`)
+makes none and the same run with `variables atoms` makes one per fluid step (the control:
+the count can see them). ctest: lammps.kokkos_fluid_step_host_copies.
 """
 import argparse
 import os
@@ -122,13 +131,63 @@ def markdown(label, c):
     return "\n".join(out) + "\n"
 
 
+# the host-side evaluations that sync atom arrays to the host (the caller the hook sees may be
+# the function that calls sync_for_variables, which ends in the sync)
+HOST_READERS = ("sync_for_variables", "sync_for_nonfinite_check", "::boundary_values",
+                "::stress_now")
+FLUID_CHECK_STEPS, FLUID_EVERY = 300, 25    # -var fast 1: a fluid step every 25 steps
+
+
+def fluid_step_host_syncs(work, name, edit=None):
+    """{caller: calls} of the syncs to the host with a mask, during fluid steps, that
+    host-side readers make, in a run of the example in work/name (`edit`: the input's text
+    changed by it first)"""
+    d = os.path.join(work, name)
+    prepare(d)
+    if edit:
+        path = os.path.join(d, "in.tidal_shear")
+        text = open(path).read()
+        open(path, "w").write(edit(text))
+    ksync = os.path.join(d, "ksync.txt")
+    env = dict(os.environ, KOKKOS_PROFILE_LIBRARY=build_hook(work), LD_PRELOAD=build_hook(work),
+               KCOUNT_OUT=os.path.join(d, "kcount.txt"), KSYNC_OUT=ksync, OMP_NUM_THREADS="1",
+               OMP_PROC_BIND="false")
+    subprocess.run(["lmp", "-k", "on", "t", "1", "-sf", "kk", "-in", "in.tidal_shear", "-var", "fast",
+                    "1", "-var", "run_steps", str(FLUID_CHECK_STEPS), "-screen", "none", "-log",
+                    "log.lammps"], cwd=d, env=env, check=True)
+    found = {}
+    for key, n in (read_lines(ksync) if os.path.exists(ksync) else {}).items():
+        words = key.split(" ")
+        if words[0] != "fluid" or words[1] != "sync" or words[2] != "Host" or int(words[3], 16) == 0:
+            continue
+        caller = " ".join(words[4:])
+        if any(r in caller for r in HOST_READERS):
+            found[caller] = found.get(caller, 0) + n
+    return found
+
+
+def fluid_step_check(work):
+    shipped = fluid_step_host_syncs(work, "fluid_step_shipped")
+    control = fluid_step_host_syncs(work, "fluid_step_atoms",
+                                    lambda t: t.replace("variables global", "variables atoms"))
+    fluid_steps = FLUID_CHECK_STEPS // FLUID_EVERY
+    print("fluid steps: %d; host-side syncs of atom arrays during them: as shipped %s, with "
+          "`variables atoms` %s" % (fluid_steps, shipped or "none", control or "none"))
+    ok = not shipped and sum(control.values()) >= fluid_steps
+    print("ok" if ok else "FAIL")
+    return 0 if ok else 1
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--work", required=True)
+    ap.add_argument("--fluid-step-check", action="store_true")
     ap.add_argument("--var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"))
     ap.add_argument("--label", default="")
     ap.add_argument("--markdown", help="append the tables to this file")
     args = ap.parse_args()
+    if args.fluid_step_check:
+        sys.exit(fluid_step_check(os.path.abspath(args.work)))
     variables = dict(args.var)
     name = "counts" + "".join("_%s_%s" % kv for kv in variables.items())
     c = count(os.path.abspath(args.work), variables, name)

@@ -153,7 +153,9 @@ void FixDarcyPressure::sum_over_ranks(double *values, int n)
 
 porewater::BoundaryValues FixDarcyPressure::boundary_values()
 {
-  if (top.is_variable() || z_top.is_variable() || bottom.is_variable()) sync_for_variables();
+  if ((top.is_variable() || z_top.is_variable() || bottom.is_variable()) &&
+      fluid->settings().variables_read_atoms)
+    sync_for_variables();
   const bigint next = update->ntimestep + fluid->settings().every;
   porewater::LammpsVariables variables(lmp);
   return porewater::BoundaryValues{top.evaluate(variables, next), z_top.evaluate(variables, next),

@@ -15,6 +15,7 @@
 #include "atom_masks.h"
 #include "error.h"
 #include "memory_kokkos.h"
+#include "modify.h"
 #include "output.h"
 #include "update.h"
 
@@ -117,9 +118,10 @@ class FixDarcyPressureKokkos<DeviceType>::Grains final : public porewater::Grain
     atomKK->sync(execution(), X_MASK | V_MASK | RADIUS_MASK | MASK_MASK);
     Kokkos::deep_copy(d_sums, 0.0);
     DepositScatter<DeviceType> scatter(d_sums);
-    Kokkos::parallel_for("darcy/pressure:deposit", Kokkos::RangePolicy<DeviceType>(0, nlocal),
-                         DepositKernel<DeviceType>{grid, porewater::KokkosGrains<DeviceType>(atomKK),
-                                                   stencils, scatter, fix->groupbit, interval});
+    porewater::kokkos_for_each_grain<DeviceType>(
+        "darcy/pressure:deposit", nlocal,
+        DepositKernel<DeviceType>{grid, porewater::KokkosGrains<DeviceType>(atomKK), stencils,
+                                  scatter, fix->groupbit, interval});
     Kokkos::Experimental::contribute(d_sums, scatter);
     // the fold, the MPI sum and the solve run on the host
     Kokkos::View<double *, Kokkos::LayoutRight, Kokkos::HostSpace, Kokkos::MemoryUnmanaged> host(
@@ -142,23 +144,20 @@ class FixDarcyPressureKokkos<DeviceType>::Grains final : public porewater::Grain
     const int nlocal = fix->atom->nlocal;
     atomKK->sync(execution(), X_MASK | F_MASK | RADIUS_MASK | MASK_MASK);
     fix->k_fluid_force.template sync<DeviceType>();
-    Kokkos::parallel_for("darcy/pressure:force", Kokkos::RangePolicy<DeviceType>(0, nlocal),
-                         ForceKernel<DeviceType>{grid, device_field,
-                                                 porewater::KokkosGrains<DeviceType>(atomKK),
-                                                 stencils, held(), fix->groupbit, kept});
+    porewater::kokkos_for_each_grain<DeviceType>(
+        "darcy/pressure:force", nlocal,
+        ForceKernel<DeviceType>{grid, device_field, porewater::KokkosGrains<DeviceType>(atomKK),
+                                stencils, held(), fix->groupbit, kept});
     atomKK->modified(execution(), F_MASK);
     fix->k_fluid_force.template modify<DeviceType>();
   }
 
   void add_held_force() override
   {
-    if (fix->held_in_pass) {    // fix nve/sphere/bed/kk's pass has added it
-      fix->held_in_pass = false;
-      return;
-    }
+    if (fix->held_in_pass.done_at(fix->update->ntimestep)) return;    // the fused pass did
     atomKK->sync(execution(), F_MASK);
-    Kokkos::parallel_for("darcy/pressure:held force",
-                         Kokkos::RangePolicy<DeviceType>(0, fix->atom->nlocal), fix->held_kernel());
+    porewater::kokkos_for_each_grain<DeviceType>("darcy/pressure:held force", fix->atom->nlocal,
+                                                 fix->held_kernel());
     atomKK->modified(execution(), F_MASK);
   }
 
@@ -191,7 +190,7 @@ class FixDarcyPressureKokkos<DeviceType>::Grains final : public porewater::Grain
 
 template <class DeviceType>
 FixDarcyPressureKokkos<DeviceType>::FixDarcyPressureKokkos(LAMMPS *lmp, int narg, char **arg) :
-    FixDarcyPressure(lmp, narg, arg), held_in_pass(false), kernels(nullptr)
+    FixDarcyPressure(lmp, narg, arg), kernels(nullptr)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
@@ -208,11 +207,14 @@ template <class DeviceType> FixDarcyPressureKokkos<DeviceType>::~FixDarcyPressur
   fluid_force = nullptr;    // not the base class' to free
 }
 
-// The per-atom fluid force is copied to the host for output steps (dump, thermo, restart)
-// only, when LAMMPS' KOKKOS Verlet copies the atom data too (a no-op where host and device
-// share memory).
+// The per-atom fluid force (f_ID) is copied to the host on the steps when another style may
+// read it, LAMMPS' own styles all being host ones: outputs (dump, thermo, restart) and the
+// steps of the end_of_step fixes (fix ave/atom, ave/time of a compute reduce, print, ...);
+// and after each run, for the commands between runs. A copy is made only when the device's
+// values changed since the last (a no-op where host and device share memory).
 template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::setup(int vflag)
 {
+  held_in_pass.reset();
   FixDarcyPressure::setup(vflag);
   k_fluid_force.template sync<LMPHostType>();
 }
@@ -220,8 +222,24 @@ template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::setup(int v
 template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::post_force(int vflag)
 {
   FixDarcyPressure::post_force(vflag);
-  held_in_pass = false;
-  if (update->ntimestep == output->next) k_fluid_force.template sync<LMPHostType>();
+  if (per_grain_output_read_now()) k_fluid_force.template sync<LMPHostType>();
+}
+
+template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::post_run()
+{
+  FixDarcyPressure::post_run();
+  k_fluid_force.template sync<LMPHostType>();
+}
+
+template <class DeviceType> bool FixDarcyPressureKokkos<DeviceType>::per_grain_output_read_now() const
+{
+  const bigint step = update->ntimestep;
+  if (step == output->next) return true;
+  for (int k = 0; k < modify->nfix; ++k)
+    if ((modify->fmask[k] & FixConst::END_OF_STEP) && modify->fix[k]->nevery > 0 &&
+        step % modify->fix[k]->nevery == 0)
+      return true;
+  return false;
 }
 
 template <class DeviceType> bool FixDarcyPressureKokkos<DeviceType>::only_holds_force_now()

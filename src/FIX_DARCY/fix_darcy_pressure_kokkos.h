@@ -1,7 +1,9 @@
 /* -*- c++ -*- ----------------------------------------------------------
    fix darcy/pressure/kk: the KOKKOS variant of darcy/pressure. Deposition and the force
    on the grains run as kernels of the core's per-grain coupling (darcy/coupling.h), the
-   same as the CPU fix runs in loops; the grid solve stays on the host.
+   same as the CPU fix runs in loops; the grid solve stays on the host. Between fluid steps
+   its held force may be added in fix nve/sphere/bed/kk's fused pass instead
+   (fix_nve_sphere_bed_pass_kokkos.h), which stamps the step it did so.
 ------------------------------------------------------------------------- */
 
 #ifndef PW_FIX_DARCY_PRESSURE_KOKKOS_H
@@ -9,6 +11,7 @@
 
 #include "darcy/coupling.h"
 #include "fix_darcy_pressure.h"
+#include "kokkos_fused_pass.h"
 #include "kokkos_grains.h"
 #include "kokkos_type.h"
 
@@ -34,13 +37,14 @@ template <class DeviceType> class FixDarcyPressureKokkos : public FixDarcyPressu
   ~FixDarcyPressureKokkos() override;
   void setup(int) override;
   void post_force(int) override;
+  void post_run() override;
   class Grains;    // the GrainBackend of the kernels
 
-  // fix nve/sphere/bed/kk's post_force pass: on a step whose post_force only adds the held
-  // fluid force, that per-grain work may run in the pass, which then says so
+  // fix nve/sphere/bed/kk's fused pass: on a step whose post_force only adds the held
+  // fluid force, that per-grain work may run in the pass, which stamps the step
   bool only_holds_force_now();
   porewater::KokkosHeldForce<DeviceType> held_kernel();
-  void held_in_the_pass() { held_in_pass = true; }
+  porewater::PassStamp &pass_stamp() { return held_in_pass; }
 
  protected:
   porewater::GrainBackend &grains() override;
@@ -49,7 +53,8 @@ template <class DeviceType> class FixDarcyPressureKokkos : public FixDarcyPressu
   void sync_for_nonfinite_check() override;
 
  private:
-  bool held_in_pass;    // this step's held force was added in fix nve/sphere/bed/kk's pass
+  bool per_grain_output_read_now() const;    // another style may read f_ID this step
+  porewater::PassStamp held_in_pass;    // the step whose held force the fused pass added
   Grains *kernels;
   DAT::tdual_ffloat_2d k_fluid_force;    // `fluid_force` is its host view
 };

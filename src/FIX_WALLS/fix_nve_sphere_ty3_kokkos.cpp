@@ -58,7 +58,7 @@ template <class DeviceType> void FixNVESphereTY3Kokkos<DeviceType>::initial_inte
                    MASK_MASK);
   k_history.template sync<DeviceType>();
   porewater::kokkos_for_each_grain<DeviceType>(
-      integrated_count(),
+      "nve/sphere/ty3:predict", integrated_count(),
       porewater::Ty3Predict<porewater::KokkosGrains<DeviceType>, HistoryRows<DeviceType>>{
           porewater::KokkosGrains<DeviceType>(atomKK),
           HistoryRows<DeviceType>{k_history.template view<DeviceType>()}, groupbit, corrector,
@@ -74,7 +74,7 @@ template <class DeviceType> void FixNVESphereTY3Kokkos<DeviceType>::final_integr
                V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | RMASS_MASK | RADIUS_MASK | MASK_MASK);
   k_history.template sync<DeviceType>();
   porewater::kokkos_for_each_grain<DeviceType>(
-      integrated_count(),
+      "nve/sphere/ty3:correct", integrated_count(),
       porewater::Ty3Correct<porewater::KokkosGrains<DeviceType>, HistoryRows<DeviceType>>{
           porewater::KokkosGrains<DeviceType>(atomKK),
           HistoryRows<DeviceType>{k_history.template view<DeviceType>()}, groupbit, update->dt,

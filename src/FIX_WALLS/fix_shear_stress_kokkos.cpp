@@ -20,9 +20,7 @@ template <class DeviceType> using Grains = porewater::KokkosGrains<DeviceType>;
 
 template <class DeviceType>
 FixShearStressKokkos<DeviceType>::FixShearStressKokkos(LAMMPS *lmp, int narg, char **arg) :
-    FixShearStress(lmp, narg, arg), on_device(false), host_current(true), summed_in_pass(false),
-    motion_in_final(false),
-    state("shear/stress:state"), d_totals("shear/stress:totals", porewater::KokkosPlateSumsThenStep<DeviceType>::count)
+    FixShearStress(lmp, narg, arg), on_device(false), host_current(true), state("shear/stress:state"), d_totals("shear/stress:totals", porewater::KokkosPlateSumsThenStep<DeviceType>::count)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
@@ -34,8 +32,11 @@ FixShearStressKokkos<DeviceType>::FixShearStressKokkos(LAMMPS *lmp, int narg, ch
 // the setup's plate on the host, as the CPU fix; then, on one rank, on the device
 template <class DeviceType> void FixShearStressKokkos<DeviceType>::setup(int vflag)
 {
+  if (on_device && !host_current) pull();
+  on_device = false;    // the setup's step is the host's
+  summed_in_pass.reset();
+  motion_in_final.reset();
   FixShearStress::setup(vflag);
-  motion_in_final = false;    // until fix nve/sphere/bed/kk takes it, at the first step
   on_device = comm->nprocs == 1;
   if (!on_device) return;
   porewater::PlateOnDevice fresh{};
@@ -68,15 +69,15 @@ template <class DeviceType> void FixShearStressKokkos<DeviceType>::post_force(in
     FixShearStress::post_force(vflag);
     return;
   }
-  if (!summed_in_pass) {
+  if (!summed_in_pass.done_at(update->ntimestep)) {
     atomKK->sync(execution_space, X_MASK | F_MASK | RMASS_MASK | IMAGE_MASK | MASK_MASK);
     porewater::kokkos_sum_over_grains_on_device<DeviceType>("shear/stress:step", atom->nlocal,
                                                             sums_kernel(), d_totals);
   }
-  summed_in_pass = false;
-  if (!motion_in_final) {
+  if (!motion_in_final.done_at(update->ntimestep)) {
     atomKK->sync(execution_space, V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | RMASS_MASK | MASK_MASK);
-    porewater::kokkos_for_each_grain<DeviceType>(atom->nlocal, motion_kernel());
+    porewater::kokkos_for_each_grain<DeviceType>("shear/stress:motion", atom->nlocal,
+                                                 motion_kernel());
     atomKK->modified(execution_space, V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK);
   }
   host_current = false;
@@ -97,10 +98,11 @@ porewater::KokkosPlateMotion<DeviceType> FixShearStressKokkos<DeviceType>::motio
   return porewater::KokkosPlateMotion<DeviceType>{Grains<DeviceType>(atomKK), groupbit, state.device};
 }
 
+// the host's copy for what reads it between runs; the plate stays on the device for a run
+// that skips the setup
 template <class DeviceType> void FixShearStressKokkos<DeviceType>::post_run()
 {
   if (on_device && !host_current) pull();
-  on_device = false;    // until the next setup: the host's plate is the plate
 }
 
 template <class DeviceType> double FixShearStressKokkos<DeviceType>::compute_vector(int n)
@@ -119,7 +121,7 @@ template <class DeviceType> void FixShearStressKokkos<DeviceType>::plate_sums(do
 {
   atomKK->sync(execution_space, X_MASK | F_MASK | RMASS_MASK | IMAGE_MASK | MASK_MASK);
   porewater::kokkos_sum_over_grains<DeviceType>(
-      atom->nlocal,
+      "shear/stress:sums", atom->nlocal,
       porewater::PlateSums<Grains<DeviceType>>{Grains<DeviceType>(atomKK), groupbit, image_unwrap()},
       sums);
 }
@@ -128,7 +130,7 @@ template <class DeviceType> void FixShearStressKokkos<DeviceType>::momentum_sums
 {
   atomKK->sync(execution_space, V_MASK | RMASS_MASK | MASK_MASK);
   porewater::kokkos_sum_over_grains<DeviceType>(
-      atom->nlocal,
+      "shear/stress:momentum", atom->nlocal,
       porewater::PlateMomentum<Grains<DeviceType>>{Grains<DeviceType>(atomKK), groupbit}, sums);
 }
 
@@ -137,7 +139,7 @@ void FixShearStressKokkos<DeviceType>::move_as_plate(double force_per_mass)
 {
   atomKK->sync(execution_space, V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | RMASS_MASK | MASK_MASK);
   porewater::kokkos_for_each_grain<DeviceType>(
-      atom->nlocal, porewater::PlateMotion<Grains<DeviceType>>{Grains<DeviceType>(atomKK), groupbit,
+      "shear/stress:move", atom->nlocal, porewater::PlateMotion<Grains<DeviceType>>{Grains<DeviceType>(atomKK), groupbit,
                                                                force_per_mass});
   atomKK->modified(execution_space, V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK);
 }
@@ -146,7 +148,7 @@ template <class DeviceType> void FixShearStressKokkos<DeviceType>::set_velocity_
 {
   atomKK->sync(execution_space, V_MASK | MASK_MASK);
   porewater::kokkos_for_each_grain<DeviceType>(
-      atom->nlocal, porewater::PlateVelocity<Grains<DeviceType>>{Grains<DeviceType>(atomKK), groupbit,
+      "shear/stress:velocity", atom->nlocal, porewater::PlateVelocity<Grains<DeviceType>>{Grains<DeviceType>(atomKK), groupbit,
                                                                  velocity});
   atomKK->modified(execution_space, V_MASK);
 }

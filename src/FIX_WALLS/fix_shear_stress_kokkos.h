@@ -1,9 +1,12 @@
 /* -*- c++ -*- ----------------------------------------------------------
    fix shear/stress/kk: the KOKKOS variant of shear/stress: the core's plate kernels
    (walls/shear_plate.h) as Kokkos kernels over the atoms. On one rank the plate itself
-   lives on the device during a run: the kernel that sums the layer's forces also takes
-   the plate's step (plate_post_force, once, on the device), and the next moves the layer;
-   nothing comes back to the host but at outputs, re-neighboring and the end of the run.
+   lives on the device: the kernel that sums the layer's forces also takes the plate's step
+   (plate_post_force, once, on the device), and the next moves the layer; nothing comes back
+   to the host but at outputs, re-neighboring and the end of a run, and it stays there
+   between runs, so a run without its setup (`run N pre no`) goes on from it. Both kernels'
+   work may run in fix nve/sphere/bed/kk's fused pass instead
+   (fix_nve_sphere_bed_pass_kokkos.h), which stamps the step it did so.
    On several ranks the sums meet in an MPI_Allreduce and the plate steps on the host, as
    in the CPU fix.
 ------------------------------------------------------------------------- */
@@ -12,6 +15,7 @@
 #define PW_FIX_SHEAR_STRESS_KOKKOS_H
 
 #include "fix_shear_stress.h"
+#include "kokkos_fused_pass.h"
 #include "kokkos_grains.h"
 #include "kokkos_type.h"
 
@@ -70,15 +74,15 @@ template <class DeviceType> class FixShearStressKokkos : public FixShearStress {
   double compute_vector(int) override;
   void write_restart(FILE *) override;
 
-  // fix nve/sphere/bed/kk's post_force pass: while the plate steps on the device, its sums
-  // of this step may run in that pass, which then says so
+  // fix nve/sphere/bed/kk's fused pass: while the plate steps on the device, its sums of
+  // this step may run in that pass, which stamps the step; and when it is the last
+  // post_force fix, the layer's motion may run in that fix's final_integrate kernel, the
+  // next to touch the grains, which the pass stamps too
   bool steps_on_device() const { return on_device; }
   porewater::KokkosPlateSumsThenStep<DeviceType> sums_kernel();
-  void summed_in_the_pass() { summed_in_pass = true; }
-  // ... and when it is the last post_force fix, the layer's motion may run in that fix's
-  // final_integrate kernel, the next to touch the grains (for the rest of the run)
+  porewater::PassStamp &pass_stamp() { return summed_in_pass; }
   porewater::KokkosPlateMotion<DeviceType> motion_kernel();
-  void leave_motion_to_final_integrate() { motion_in_final = true; }
+  porewater::PassStamp &motion_stamp() { return motion_in_final; }
 
  protected:
   void plate_sums(double *sums) override;
@@ -89,8 +93,8 @@ template <class DeviceType> class FixShearStressKokkos : public FixShearStress {
  private:
   bool on_device;       // this run's plate lives on the device (one rank)
   bool host_current;    // the host's plate is the device's
-  bool summed_in_pass;    // this step's sums ran in fix nve/sphere/bed/kk's pass
-  bool motion_in_final;    // fix nve/sphere/bed/kk's final_integrate moves the layer
+  porewater::PassStamp summed_in_pass;     // the step whose sums ran in the fused pass
+  porewater::PassStamp motion_in_final;    // the step whose motion the bed's final moves
   porewater::DeviceState<porewater::PlateOnDevice, DeviceType> state;
   Kokkos::View<double *, DeviceType> d_totals;    // the sums (read by the step on the device)
   void pull();    // the device's plate to the host's; stops the run if its step went wrong

@@ -101,6 +101,7 @@ void FixWallStress::final_integrate()
 
 double FixWallStress::stress_now()
 {
+  if (stress.is_variable() && wall->settings().variables_read_atoms) sync_for_variables();
   porewater::LammpsVariables variables(lmp);
   return stress.evaluate(variables, update->ntimestep + 1);
 }

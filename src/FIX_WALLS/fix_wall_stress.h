@@ -43,6 +43,9 @@ class FixWallStress : public Fix, protected porewater::StressWallHost {
   // the grains, sums = {force on the wall, spring energy, zz virial}; the KOKKOS variant
   // runs them as a kernel over every grain
   virtual void grain_contacts(double *sums);
+  // before the stress variable is evaluated, unless `variables time`: the atom data it may
+  // read current on the host (the KOKKOS variant copies it from the device)
+  virtual void sync_for_variables() {}
 
   // the CPU fix visits only the grains within reach: those whose top was above
   // z_w − skin when the list was built (at z_w = reach_wall_z). Until LAMMPS re-neighbors no

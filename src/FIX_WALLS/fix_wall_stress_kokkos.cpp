@@ -1,8 +1,8 @@
 /* ----------------------------------------------------------------------
    fix wall/stress/kk (see doc/fix_wall_stress.rst)
 
-   On one rank, between a run's setup (on the host, as the CPU fix) and its end, the wall
-   lives on the device. The step's velocity Verlet is the CPU fix's, in the same order: the
+   On one rank, from a run's setup (on the host, as the CPU fix) on, the wall lives on the
+   device; the end of a run brings a copy to the host. The step's velocity Verlet is the CPU fix's, in the same order: the
    kernel of post_force first applies, as every grain sees it, the last step's final kick
    and this step's initial kick and drift, then sums the contacts, and its final (once, on
    the device) takes the wall's force and stores the half-step state; the host's
@@ -21,7 +21,7 @@ using namespace LAMMPS_NS;
 template <class DeviceType>
 FixWallStressKokkos<DeviceType>::FixWallStressKokkos(LAMMPS *lmp, int narg, char **arg) :
     FixWallStress(lmp, narg, arg), on_device(false), half_step(false), step_done(false),
-    host_current(true), stepped_in_pass(false), state("wall/stress:state"), d_totals("wall/stress:totals", porewater::KokkosWallStep<DeviceType>::count)
+    host_current(true), state("wall/stress:state"), d_totals("wall/stress:totals", porewater::KokkosWallStep<DeviceType>::count)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
@@ -34,6 +34,9 @@ FixWallStressKokkos<DeviceType>::FixWallStressKokkos(LAMMPS *lmp, int narg, char
 // the forces of the setup on the host, as the CPU fix; `z auto` reads the grains there once
 template <class DeviceType> void FixWallStressKokkos<DeviceType>::setup(int vflag)
 {
+  if (on_device && !host_current) pull();
+  on_device = false;    // the setup's step is the host's
+  stepped_in_pass.reset();
   if (wall->placement_pending()) atomKK->sync(Host, X_MASK | RADIUS_MASK | MASK_MASK);
   FixWallStress::setup(vflag);
   on_device = comm->nprocs == 1;
@@ -76,13 +79,12 @@ template <class DeviceType> void FixWallStressKokkos<DeviceType>::post_force(int
     return;
   }
   v_init(vflag);
-  if (!stepped_in_pass) {
+  if (!stepped_in_pass.done_at(update->ntimestep)) {
     atomKK->sync(execution_space, X_MASK | V_MASK | F_MASK | RADIUS_MASK | MASK_MASK);
     porewater::kokkos_sum_over_grains_on_device<DeviceType>("wall/stress:step", atom->nlocal,
                                                             step_kernel(), d_totals);
     atomKK->modified(execution_space, F_MASK);
   }
-  stepped_in_pass = false;
   half_step = true;
   step_done = false;
   host_current = false;
@@ -112,10 +114,11 @@ template <class DeviceType> void FixWallStressKokkos<DeviceType>::final_integrat
   }
 }
 
+// the host's copy for what reads it between runs; the wall stays on the device for a run
+// that skips the setup, whose first kernel applies the final kick this copy shows
 template <class DeviceType> void FixWallStressKokkos<DeviceType>::post_run()
 {
   if (on_device && !host_current) pull();
-  on_device = false;    // until the next setup: the host's wall is the wall
 }
 
 template <class DeviceType> double FixWallStressKokkos<DeviceType>::compute_scalar()
@@ -147,11 +150,17 @@ template <class DeviceType> void FixWallStressKokkos<DeviceType>::grain_contacts
 {
   atomKK->sync(execution_space, X_MASK | V_MASK | F_MASK | RADIUS_MASK | MASK_MASK);
   porewater::kokkos_sum_over_grains<DeviceType>(
-      atom->nlocal,
+      "wall/stress:contacts", atom->nlocal,
       wall->contacts(porewater::KokkosGrains<DeviceType>(atomKK), porewater::KokkosNoPerAtomVirial(),
                      groupbit),
       sums);
   atomKK->modified(execution_space, F_MASK);
+}
+
+template <class DeviceType> void FixWallStressKokkos<DeviceType>::sync_for_variables()
+{
+  atomKK->sync(Host, X_MASK | V_MASK | F_MASK | TAG_MASK | TYPE_MASK | MASK_MASK | IMAGE_MASK |
+                   RMASS_MASK | RADIUS_MASK);
 }
 
 namespace LAMMPS_NS {

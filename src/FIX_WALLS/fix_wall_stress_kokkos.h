@@ -11,6 +11,7 @@
 #define PW_FIX_WALL_STRESS_KOKKOS_H
 
 #include "fix_wall_stress.h"
+#include "kokkos_fused_pass.h"
 #include "kokkos_grains.h"
 #include "kokkos_type.h"
 
@@ -91,21 +92,22 @@ template <class DeviceType> class FixWallStressKokkos : public FixWallStress {
   void *extract(const char *, int &) override;
   void write_restart(FILE *) override;
 
-  // fix nve/sphere/bed/kk's post_force pass: while the wall steps on the device, its
-  // kernel body of this step may run in that pass, which then says so
+  // fix nve/sphere/bed/kk's fused pass: while the wall steps on the device, its kernel
+  // body of this step may run in that pass, which stamps the step
   bool steps_on_device() const { return on_device; }
   porewater::KokkosWallStep<DeviceType> step_kernel();
-  void stepped_in_the_pass() { stepped_in_pass = true; }
+  porewater::PassStamp &pass_stamp() { return stepped_in_pass; }
 
  protected:
   void grain_contacts(double *sums) override;
+  void sync_for_variables() override;
 
  private:
   bool on_device;       // this run's wall lives on the device (one rank)
   bool half_step;       // the device's velocity is the half-step one; its final kick is due
   bool step_done;       // final_integrate has passed since: the host sees the final kick
   bool host_current;    // the host's wall is the device's
-  bool stepped_in_pass;    // this step's kernel ran in fix nve/sphere/bed/kk's pass
+  porewater::PassStamp stepped_in_pass;    // the step whose kernel ran in the fused pass
   porewater::DeviceState<porewater::WallOnDevice, DeviceType> state;
   Kokkos::View<double *, DeviceType> d_totals;    // the kernel's sums (read by its final)
   void pull();    // the device's wall to the host's, its final kick applied when past; checks

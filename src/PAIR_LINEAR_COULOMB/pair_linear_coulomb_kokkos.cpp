@@ -11,6 +11,7 @@
 #include "pair_linear_coulomb_kokkos.h"
 
 #include "contact/contact_block.h"
+#include "kokkos_grains.h"
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
@@ -25,6 +26,8 @@
 #include "neighbor.h"
 #include "output.h"
 #include "update.h"
+
+#include <type_traits>
 
 using namespace LAMMPS_NS;
 using porewater::ContactCoeffs;
@@ -311,8 +314,8 @@ template <class Kernel, class DeviceType>
 void run_sweep(const Kernel &kernel, const int inum, PairTally &sums, const bool reduce,
                std::true_type /*host*/)
 {
-  const Kokkos::RangePolicy<DeviceType, TagBlock> chunks(
-      0, (inum + GRAINS_PER_CHUNK - 1) / GRAINS_PER_CHUNK);
+  const auto chunks =
+      porewater::grain_range<DeviceType, TagBlock>(0, (inum + GRAINS_PER_CHUNK - 1) / GRAINS_PER_CHUNK);
   if (reduce)
     Kokkos::parallel_reduce("pair linear/coulomb", chunks, kernel, sums);
   else
@@ -322,7 +325,10 @@ template <class Kernel, class DeviceType>
 void run_sweep(const Kernel &kernel, const int inum, PairTally &sums, const bool reduce,
                std::false_type /*device*/)
 {
-  const Kokkos::RangePolicy<DeviceType> grains(0, inum);
+  const auto grains = porewater::grain_range<DeviceType>(0, inum);
+  using Space = typename DeviceType::execution_space;
+  PW_ASSERT_LAUNCH_BY_ARGUMENT(
+      Space, Kokkos::Impl::ParallelFor<Kernel, typename std::decay<decltype(grains)>::type, Space>);
   if (reduce)
     Kokkos::parallel_reduce("pair linear/coulomb", grains, kernel, sums);
   else

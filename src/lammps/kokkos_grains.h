@@ -55,19 +55,54 @@ template <class Body> struct SumOverGrains {
   KOKKOS_INLINE_FUNCTION void operator()(const int i, value_type sums) const { body(i, sums); }
 };
 
-// body(i) for the grains [0, n) as a kernel in DeviceType's execution space
-template <class DeviceType, class Body> void kokkos_for_each_grain(int n, const Body &body)
+// The range of every kernel of the package. Light weight: on CUDA, Kokkos 3.4 then passes
+// the kernel's launch object (functor and policy) as a kernel argument up to 4 kB, where it
+// would otherwise copy one of 512 B or more to constant memory and wait for the last kernel
+// that used it (Kokkos_Cuda_KernelLaunch.hpp, DeduceCudaLaunchMechanism); other backends
+// ignore the hint. The CUDA check asserts the argument path (assert_launch_by_argument).
+template <class DeviceType, class Tag = void> auto grain_range(int begin, int end)
+    -> decltype(Kokkos::Experimental::require(
+        Kokkos::RangePolicy<DeviceType, Tag>(begin, end),
+        Kokkos::Experimental::WorkItemProperty::HintLightWeight))
 {
-  Kokkos::parallel_for(Kokkos::RangePolicy<DeviceType>(0, n), ForEachGrain<Body>{body});
+  return Kokkos::Experimental::require(Kokkos::RangePolicy<DeviceType, Tag>(begin, end),
+                                       Kokkos::Experimental::WorkItemProperty::HintLightWeight);
 }
 
-// body(i, sums) for the grains [0, n), summing Body::count values into sums
+// On CUDA, a kernel of `Driver` (Kokkos::Impl::ParallelFor/ParallelReduce) has its launch
+// object passed as a kernel argument: no copy to constant memory, no wait for the host.
+// Other execution spaces launch no such object.
+template <class Space, class Driver> struct LaunchedByArgument {
+  static constexpr bool value = true;
+};
+#ifdef KOKKOS_ENABLE_CUDA
+template <class Driver> struct LaunchedByArgument<Kokkos::Cuda, Driver> {
+  static constexpr bool value = Kokkos::Impl::DeduceCudaLaunchMechanism<Driver>::launch_mechanism ==
+      Kokkos::Impl::Experimental::CudaLaunchMechanism::LocalMemory;
+};
+#endif
+#define PW_ASSERT_LAUNCH_BY_ARGUMENT(Space, ...)                                               \
+  static_assert(porewater::LaunchedByArgument<Space, __VA_ARGS__>::value,                       \
+                "this kernel's launch object would go through CUDA constant memory (a host "  \
+                "wait): launch it on grain_range (light weight) and keep it under 4 kB")
+
+// body(i) for the grains [0, n) as a kernel `name` in DeviceType's execution space
 template <class DeviceType, class Body>
-void kokkos_sum_over_grains(int n, const Body &body, double *sums)
+void kokkos_for_each_grain(const char *name, int n, const Body &body)
+{
+  using Policy = decltype(grain_range<DeviceType>(0, n));
+  using Space = typename DeviceType::execution_space;
+  PW_ASSERT_LAUNCH_BY_ARGUMENT(Space, Kokkos::Impl::ParallelFor<ForEachGrain<Body>, Policy, Space>);
+  Kokkos::parallel_for(name, grain_range<DeviceType>(0, n), ForEachGrain<Body>{body});
+}
+
+// body(i, sums) for the grains [0, n), summing Body::count values into the host's sums
+template <class DeviceType, class Body>
+void kokkos_sum_over_grains(const char *name, int n, const Body &body, double *sums)
 {
   for (int k = 0; k < Body::count; ++k) sums[k] = 0.0;
-  Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, n), SumOverGrains<Body>{Body::count, body},
-                          sums);
+  Kokkos::parallel_reduce(name, grain_range<DeviceType>(0, n),
+                          SumOverGrains<Body>{Body::count, body}, sums);
 }
 
 // body(i, sums) for the grains [0, n), summing Body::count values, then body.final(sums)
@@ -90,7 +125,11 @@ template <class DeviceType, class Body>
 void kokkos_sum_over_grains_on_device(const char *name, int n, const Body &body,
                                       const Kokkos::View<double *, DeviceType> &totals)
 {
-  Kokkos::parallel_reduce(name, Kokkos::RangePolicy<DeviceType>(0, n > 0 ? n : 1),
+  using Policy = decltype(grain_range<DeviceType>(0, 1));
+  using Space = typename DeviceType::execution_space;
+  PW_ASSERT_LAUNCH_BY_ARGUMENT(
+      Space, Kokkos::Impl::ParallelReduce<SumOverGrainsOnDevice<Body>, Policy, Kokkos::InvalidType, Space>);
+  Kokkos::parallel_reduce(name, grain_range<DeviceType>(0, n > 0 ? n : 1),
                           SumOverGrainsOnDevice<Body>{Body::count, body, n}, totals);
 }
 

@@ -14,9 +14,9 @@ it. `--during-write`: the kill comes while a checkpoint is being written (the te
 exists, not yet renamed): the continuation must start from the checkpoint before it and
 still end equal.
 
-Usage: check_tidal_shear_continue.py --lmp LMP --plugin-dir DIR [--mode serial|np2|kk]
+Usage: check_tidal_shear_continue.py --lmp LMP --plugin-dir DIR [--mode serial|np2|kk|kk_np2]
        [--mpirun MPIRUN] [--seeds N] [--during-write]
-Exit 77 (skipped) for --mode kk on a LAMMPS without KOKKOS (PW_HOST_KOKKOS=0).
+Exit 77 (skipped) for --mode kk or kk_np2 on a LAMMPS without KOKKOS (PW_HOST_KOKKOS=0).
 """
 import argparse
 import os
@@ -50,9 +50,9 @@ RUN = run_variables()
 
 def command(args, extra, run_vars=RUN):
     cmd = [args.lmp, "-in", "in.tidal_shear"] + run_vars + extra
-    if args.mode == "kk":
+    if args.mode in ("kk", "kk_np2"):
         cmd += ["-k", "on", "t", "1", "-sf", "kk"]
-    if args.mode == "np2":
+    if args.mode in ("np2", "kk_np2"):
         cmd = [args.mpirun, "--oversubscribe", "-np", "2"] + cmd
     return cmd
 
@@ -143,12 +143,12 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--lmp", required=True)
     ap.add_argument("--plugin-dir", required=True)
-    ap.add_argument("--mode", default="serial", choices=["serial", "np2", "kk"])
+    ap.add_argument("--mode", default="serial", choices=["serial", "np2", "kk", "kk_np2"])
     ap.add_argument("--mpirun", default="mpirun")
     ap.add_argument("--seeds", type=int, default=3)
     ap.add_argument("--during-write", action="store_true")
     args = ap.parse_args()
-    if args.mode == "kk" and os.environ.get("PW_HOST_KOKKOS", "1") == "0":
+    if args.mode in ("kk", "kk_np2") and os.environ.get("PW_HOST_KOKKOS", "1") == "0":
         print("skipped: this LAMMPS has no KOKKOS package")
         return 77
     os.environ["LD_LIBRARY_PATH"] = args.plugin_dir + ":" + os.environ.get("LD_LIBRARY_PATH", "")

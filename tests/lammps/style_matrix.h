@@ -9,7 +9,9 @@
 //                                    the same with -sf kk)
 //   MpiDecompositionEqualsSerial     a run on MPI_COMM_WORLD equals a serial (MPI_COMM_SELF)
 //                                    run on each rank; ctest runs every test named *Mpi*
-//                                    again under mpirun -np 2 and -np 3
+//                                    again under mpirun -np 2 and -np 3 (KokkosMpi...: the
+//                                    same with -sf kk, whose styles keep their state on the
+//                                    host on several ranks and on the device on one)
 //   BadInputNamesTheKeyword          each bad input stops with its message (CPU; Kokkos...:
 //                                    the /kk style)
 //
@@ -342,19 +344,30 @@ TEST_P(StyleMatrix, KokkosEqualsCpu)
   expect_close(c, cpu, kk, false, "/kk vs CPU after " + std::to_string(c.kokkos.steps) + " steps");
 }
 
-TEST_P(StyleMatrix, MpiDecompositionEqualsSerial)
+// under mpirun -np 2 and 3 (ctest lammps.test_style_matrix.np2, .np3) a run decomposed
+// over the ranks against a serial run on each rank; with one rank serial against serial
+inline void expect_decomposition_equals_serial(const StyleCase &c, Accel accel)
 {
-  // under mpirun -np 2 and 3 (ctest lammps.test_style_matrix.np2, .np3) a run decomposed
-  // over the ranks against a serial run on each rank; with one rank serial against serial
-  const StyleCase &c = GetParam();
   const bool by_site = c.lattice > 0;
-  const Snapshot parallel = run_scene(c, c.mpi, Accel::none, MPI_COMM_WORLD, by_site);
-  const Snapshot serial = run_scene(c, c.mpi, Accel::none, MPI_COMM_SELF, by_site);
+  const Snapshot parallel = run_scene(c, c.mpi, accel, MPI_COMM_WORLD, by_site);
+  const Snapshot serial = run_scene(c, c.mpi, accel, MPI_COMM_SELF, by_site);
+  EXPECT_EQ(parallel.style, c.style + (accel == Accel::kokkos ? "/kk" : ""));
   int ranks = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   expect_close(c, serial, parallel, true,
                std::to_string(ranks) + " ranks vs serial after " + std::to_string(c.mpi.steps) +
-                   " steps");
+                   " steps" + (accel == Accel::kokkos ? " (/kk)" : ""));
+}
+
+TEST_P(StyleMatrix, MpiDecompositionEqualsSerial)
+{
+  expect_decomposition_equals_serial(GetParam(), Accel::none);
+}
+
+TEST_P(StyleMatrix, KokkosMpiDecompositionEqualsSerial)
+{
+  PW_SKIP_WITHOUT_KOKKOS();
+  expect_decomposition_equals_serial(GetParam(), Accel::kokkos);
 }
 
 // Separate lmp processes, as users run them: within one process LAMMPS 29Sep2021 names the

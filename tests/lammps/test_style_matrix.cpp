@@ -113,6 +113,7 @@ StyleCase fix_darcy_pressure(const std::string &options = "")
       {fix + unit + " damping 1", "unknown keyword 'damping' (allowed: grid, viscosity,"},
       {"fix bad all darcy/pressure grid 2 0 4" + unit, "grid expects an integer >= 1, got '0'"},
       {fix + unit + " interpolate always", "interpolate expects step or fluid, got 'always'"},
+      {fix + unit + " variables time", "variables expects atoms or global, got 'time'"},
       {fix + unit + " novertical", "novertical expects a group ID, but the command ends there"},
       // groups are looked up when the run starts
       {"run 0", "novertical group nope does not exist", fix + unit + " novertical nope\n"},
@@ -183,7 +184,9 @@ StyleCase fix_wall_stress(const std::string &name, const std::string &kokkos_opt
       {fix + "z 8 stress 0.5 mass 6 kn 100 damping -1", "damping expects a finite number >= 0, got '-1'"},
       {fix + "z 8 stress 0.5 mass 6 kn 100 wiggle 1",
        "unknown keyword 'wiggle' (allowed: z, stress, mass, kn, damping, damping_velocity, "
-       "plate_damping)"},
+       "plate_damping, variables)"},
+      {fix + "z 8 stress 0.5 mass 6 kn 100 variables time",
+       "variables expects atoms or global, got 'time'"},
       {fix + "z 8 stress v_nope mass 6 kn 100\nrun 0", "variable nope for stress does not exist"},
       {"variable perat atom x\n" + fix + "z 8 stress v_perat mass 6 kn 100\nrun 0",
        "variable perat for stress is not equal-style"},
@@ -281,7 +284,8 @@ StyleCase fix_nve_sphere_bed()
   c.bad_scene = loose_bed(3, 3);
   const std::string bed = "fix grains all nve/sphere/bed ";
   c.bad_inputs = {
-      {bed + "drag 1", "unknown keyword 'drag' (allowed: held, gravity, floor)"},
+      {bed + "drag 1", "unknown keyword 'drag' (allowed: held, gravity, floor, fuse)"},
+      {bed + "fuse maybe", "fuse expects yes or no, got 'maybe'"},
       {bed + "held", "held expects a group ID, but the command ends there"},
       {bed + "held base", "held names group base, which does not exist"},
       {bed + "gravity down bed", "gravity expects a finite number, got 'down'"},

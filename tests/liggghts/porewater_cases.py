@@ -338,7 +338,7 @@ WALL_BAD_INPUT = [
      "z expects auto or a finite number, got 'top'"),
     ("wall_keyword", WALL_BOX + WALL + "z 8 stress 0.5 mass 6 kn 100 wiggle 1",
      "unknown keyword 'wiggle' (allowed: z, stress, mass, kn, damping, damping_velocity, "
-     "plate_damping)"),
+     "plate_damping, variables)"),
     ("wall_damping_velocity", WALL_BOX + WALL + "z 8 stress 0.5 mass 6 kn 100 damping_velocity lab",
      "damping_velocity expects relative or absolute, got 'lab'"),
     ("wall_variable", WALL_BOX + WALL + "z 8 stress v_nope mass 6 kn 100\nrun 0",

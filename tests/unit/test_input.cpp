@@ -55,7 +55,7 @@ TEST(KeywordReader, EveryMessageNamesTheCommandTheKeywordAndWhatItAccepts)
             "Illegal fix test command: missing required keyword(s): kn");
   EXPECT_EQ(message_of({"z", "8", "spin", "1"}, wall),
             "Illegal fix test command: unknown keyword 'spin' (allowed: z, stress, mass, kn, damping, "
-            "damping_velocity, plate_damping)");
+            "damping_velocity, plate_damping, variables)");
   auto darcy = [](KeywordReader &in) { parse_darcy(in, 0.0, 1.0); };
   EXPECT_EQ(message_of({"grid", "2", "2", "2", "viscosity", "1", "compressibility", "1", "density",
                         "1", "permeability", "1", "top", "open"},

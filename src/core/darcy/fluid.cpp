@@ -40,8 +40,8 @@ std::string number(double v, int digits = 6)
 }
 
 // a grid whose index arithmetic overflows an int, or that the machine cannot hold, stops
-// before anything is allocated
-void check_grid_fits(const DarcySettings &s, int copies)
+// before anything is allocated or indexed (the settings, checked, for the first member)
+const DarcySettings &check_grid_fits(const DarcySettings &s, int copies)
 {
   const double cells = (double) s.grid[0] * s.grid[1] * s.grid[2];
   const double blocks = (double) s.grid[0] * s.grid[1] * (s.grid[2] + 1);
@@ -60,6 +60,7 @@ void check_grid_fits(const DarcySettings &s, int copies)
                      (copies > 1 ? " on each of the " + std::to_string(copies) + " ranks of this node"
                                  : std::string()) +
                      ", more than this machine's " + number(memory) + " bytes of memory");
+  return s;
 }
 
 }    // namespace
@@ -89,13 +90,12 @@ GridGeom darcy_grid_geom(const DarcySettings &s, const HostBox &box)
 
 DarcyFluid::DarcyFluid(const DarcySettings &settings, const GridGeom &geom, const std::string &id,
                        int copies) :
-    settings_(settings), grid_(coupling_grid(geom)), id_(id), field_changed_(true),
+    settings_(check_grid_fits(settings, copies)), grid_(coupling_grid(geom)), id_(id), field_changed_(true),
     stencils_kept_(false), started_(false), last_fluid_step_(0), force_step_(-1),
     last_solve_{true, 0, 0.0, 0.0, -1}, porosity_warned_(false), unsettled_warned_(false),
     profile_(nullptr),
     last_profile_step_(-1), last_vtk_step_(-1), restored_(false)
 {
-  check_grid_fits(settings, copies);
   solver_.reset(new DarcySolver(geom, settings.params));
   if (!settings_.z_top_given) settings_.z_top = NumberOrVariable{solver_->z_grid_top(), ""};
   sums_.assign(grid_.sums_size(), 0.0);

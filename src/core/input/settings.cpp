@@ -55,9 +55,11 @@ WallStressSettings parse_wall_stress(KeywordReader &in)
       s.damping_velocity = in.choice({"relative", "absolute"});
     } else if (key == "plate_damping") {
       s.plate_damping = in.non_negative();
+    } else if (key == "variables") {
+      s.variables_read_atoms = in.choice({"atoms", "global"}) == 0;
     } else {
       in.unknown_keyword({"z", "stress", "mass", "kn", "damping", "damping_velocity",
-                          "plate_damping"});
+                          "plate_damping", "variables"});
     }
   }
   in.require({"z", "stress", "mass", "kn"}, {have_z, have_stress, have_mass, have_kn});
@@ -98,8 +100,10 @@ BedSettings parse_nve_sphere_bed(KeywordReader &in)
       s.z_floor = in.number();
       s.kn = in.named("floor kn").positive();
       s.floor = true;
+    } else if (key == "fuse") {
+      s.fuse = in.yes_no();
     } else {
-      in.unknown_keyword({"held", "gravity", "floor"});
+      in.unknown_keyword({"held", "gravity", "floor", "fuse"});
     }
   }
   return s;
@@ -238,6 +242,8 @@ DarcySettings parse_darcy(KeywordReader &in, double box_zlo, double box_zhi)
       s.seepage = in.choice({"pressure", "full"}) == 0 ? SEEPAGE_PRESSURE : SEEPAGE_FULL;
     } else if (key == "every") {
       s.every = in.count();
+    } else if (key == "variables") {
+      s.variables_read_atoms = in.choice({"atoms", "global"}) == 0;
     } else if (key == "interpolate") {
       s.interpolate_every_step = in.choice({"step", "fluid"}) == 0;
     } else if (key == "zhi") {
@@ -255,7 +261,7 @@ DarcySettings parse_darcy(KeywordReader &in, double box_zlo, double box_zhi)
       in.unknown_keyword({"grid", "viscosity", "compressibility", "density", "permeability",
                           "top", "ztop", "bottom", "initial", "gravity", "porosity", "kmax",
                           "tol", "atol", "maxiter", "solver", "novertical", "seepage", "every",
-                          "interpolate", "zhi", "profile", "append", "vtk"});
+                          "interpolate", "zhi", "profile", "append", "vtk", "variables"});
     }
   }
   in.require({"grid", "viscosity", "compressibility", "density", "permeability"},

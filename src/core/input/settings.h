@@ -36,6 +36,7 @@ struct WallStressSettings {
   double damping = 0.0;         // gamma of the grain-wall dashpot
   int damping_velocity = 0;     // WALL_DAMPING_RELATIVE (0) or _ABSOLUTE (1): what it damps
   double plate_damping = 0.0;   // gamma_p of a dashpot on the wall's own velocity
+  bool variables_read_atoms = true;  // `variables global`: the stress variable reads none
 };
 WallStressSettings parse_wall_stress(KeywordReader &in);
 
@@ -52,7 +53,7 @@ struct Ty3Settings {
 };
 Ty3Settings parse_ty3(KeywordReader &in);
 
-// fix ID group nve/sphere/bed [held GROUP] [gravity G GROUP] [floor Z0 KN]
+// fix ID group nve/sphere/bed [held GROUP] [gravity G GROUP] [floor Z0 KN] [fuse yes|no]
 struct BedSettings {
   std::string held_group;       // empty: none (these grains move along z only)
   double gravity = 0.0;         // g, along −z, on gravity_group
@@ -60,6 +61,7 @@ struct BedSettings {
   bool floor = false;           // a frictionless spring floor at z_floor
   double z_floor = 0.0;
   double kn = 0.0;
+  bool fuse = true;             // /kk: the fused pass of the fixes after it (CPU: no effect)
 };
 BedSettings parse_nve_sphere_bed(KeywordReader &in);
 
@@ -102,6 +104,7 @@ struct DarcySettings {
   // original program's shear plate; empty: none
   std::string novertical_group;
   int seepage = SEEPAGE_PRESSURE;    // the fluid force on the grains: -V grad p, or SEEPAGE_FULL
+  bool variables_read_atoms = true;  // `variables global`: top/ztop/bottom read no atom data
   int every = 1;                     // fluid step every this many grain steps
   bool interpolate_every_step = true;  // false: grain forces held between fluid steps
   int profile_every = 0;             // 0: no profile file
