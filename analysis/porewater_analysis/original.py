@@ -38,17 +38,36 @@ def shear_strain_rate(vx_top, z_wall):
     return shear_velocity(vx_top) / z_wall
 
 
-def original_samples(series, period):
-    """the rows of the time series at the original's sampling: it wrote an output file every
-    0.01 s of its 5 s cycle (period/500) and read them from the first on, never the initial
-    state (rate-dependence.py line 70, readstep(i+1)). Our rows stand at t = k nout dt,
-    k = 1, 2, ..., ~1000 per cycle (in.tidal_shear `samples`): every second row (k even;
-    generally k a multiple of the stride nearest to period/500 over the rows' spacing) is
-    spaced period/500"""
-    t = series["time"]
+def sample_grid(t, period):
+    """(offset, stride) of rows at times t (t = k nout dt, k = 1, 2, ...): every stride-th row
+    (the stride nearest to period/500, the original's 0.01 s of its 5 s cycle, over the rows'
+    spacing) makes a grid at the original's cadence; offset = k mod stride says which of the
+    stride grids a row belongs to (original_samples)"""
     spacing = np.median(np.diff(t))
     stride = max(1, int(round(period / FILES_PER_CYCLE / spacing)))
-    keep = (np.rint(t / spacing).astype(int) % stride == 0) & (t > 0)
+    return np.rint(t / spacing).astype(int) % stride, stride
+
+
+def original_samples(series, period, offset=0):
+    """the rows of the time series at the original's sampling: it wrote an output file every
+    0.01 s of its 5 s cycle (period/500) and read them from the first on, never the initial
+    state (rate-dependence.py line 70, readstep(i+1)). Each file holds the time it was
+    written, which the scripts read as the sample's time (currentTime(), rate-dependence.py
+    line 79; src/file_io.cpp line 443 writes time.current): src/device.cu adds dt to the time
+    and to a file clock each step (lines 2543-2544), writes a file once that clock reaches
+    0.01 s (line 2576) and zeroes it (line 2679), so file j stands at j m dt >= j 0.01 s (m
+    the steps of a file, dt the original's time step). Our rows stand at t = k nout dt, k = 1,
+    2, ..., ~1000 per cycle, nout dt ~ period/1000 (in.tidal_shear line 49 rounds it to whole
+    fluid steps; Table S1: 0.0050018 s): every second row (generally every stride-th,
+    sample_grid) is a grid at the original's cadence. `offset` 0 (k even: t ~ 0.01, 0.02, ...
+    s on Table S1) is the grid that starts at the original's first file; 1 .. stride-1 the
+    grids between, as much the original's cadence: which of them a fit or a minimum reads is
+    no part of the original's code, and what it changes is measured (landings.landings,
+    leave_fastest_out on each offset). The sample's time is its row's time, as the original's
+    is its file's"""
+    t = series["time"]
+    grid, _ = sample_grid(t, period)
+    keep = (grid == offset) & (t > 0)
     return {name: column[keep] for name, column in series.items()}
 
 
@@ -57,54 +76,125 @@ def creep_rheology2(friction, n, A):
     return A * friction ** n
 
 
-def creep_samples(series, period, tau, rate_scale=1.0):
-    """every original sample (original_samples) with its time, cycle, tau/N, scaled rate, and
-    whether the creep fit keeps it (python/halfshear-darcy-rate-dependence.py lines 69-111):
-    tau the DEFINED shear stress (line 73, w_tau_x), N the DEFINED normal stress (line 75,
-    currentNormalStress() 'defined', python/sphere.py lines 4121-4140: sigma0 + A sin(2 pi f t),
-    our N_applied), rate shearStrainRate() * t_DEM_to_t_real (line 77; rate_scale =
-    mu_f/1.787e-3, line 71). Kept: a nonzero rate (line 88, numpy.nonzero), then
-    (lines 99-111) tau/N < 0.38, rate < 0.1 * t_DEM_to_t_real, and t inside 1-3 s of a 5 s
-    cycle: (6, 8), (11, 13), ... from the second cycle on (the caller picks the cycles), here
-    0.2 < phase < 0.6 of our period. The rate threshold is the unscaled rate < 0.1 1/s over
-    Table S1's 5 s cycle; our reduced case runs the cycle in `period` (2.5 s), its rates
-    larger by ORIGINAL_PERIOD/period for the same strain per cycle, so the threshold is
-    0.1 * ORIGINAL_PERIOD/period 1/s unscaled (rate * period < 0.5)."""
-    s = original_samples(series, period)
+# the creep fit's cuts (python/halfshear-darcy-rate-dependence.py), in the script's order
+CUTS = (
+    ("rate 0", "line 88, numpy.nonzero(shearstrainrate): max(vx_top, 0) = 0"),
+    ("tau/N >= 0.38", "line 99, tau/N < 0.38, strict"),
+    ("rate >= 0.1", "line 100, rate < 0.1 t_DEM_to_t_real, strict (0.1 x 5 s/period here)"),
+    ("outside 1-3 s", "lines 101-111, 6 < t < 8, 11 < t < 13, ...: open, on the sample's time"),
+    ("cycle", "lines 101-111 start at 6 s: cycles before the fit's first (or after its last)"),
+)
+
+
+def creep_samples(series, period, tau, rate_scale=1.0, offset=0):
+    """every original sample (original_samples at `offset`) with its time, cycle, phase,
+    tau/N, scaled rate, shear velocity, the cuts of the creep fit it fails ({name of CUTS:
+    mask}, the cycle cut left to the caller) and whether the fit keeps it ("kept": it fails
+    none), as python/halfshear-darcy-rate-dependence.py lines 69-111: tau the DEFINED shear
+    stress (line 73, w_tau_x), N the DEFINED normal stress (line 75, currentNormalStress()
+    'defined', python/sphere.py lines 4121-4140: sigma0 + A sin(2 pi f t) at the file's time,
+    our N_applied at the row's), rate shearStrainRate() * t_DEM_to_t_real (line 77;
+    rate_scale = mu_f/1.787e-3, line 71), t the sample's time (line 79, currentTime(): the
+    time its file was written, original_samples). The cuts: a zero rate (line 88,
+    numpy.nonzero: a top layer at rest or moving backwards, shear_velocity), then (lines
+    99-111) tau/N < 0.38, rate < 0.1 * t_DEM_to_t_real and t inside 1-3 s of a 5 s cycle,
+    (6, 8), (11, 13), ...: all strict, so a sample exactly at tau/N 0.38, at the rate's
+    threshold or at a window's end is cut, and a window's first sample is kept where it
+    stands after the window opens (the original's file 600 at 600 m dt >= 6 s, our row at
+    k nout dt). Here the window is 0.2 < phase < 0.6 of our period. The rate threshold is the
+    unscaled rate < 0.1 1/s over Table S1's 5 s cycle; our reduced case runs the cycle in
+    `period` (2.5 s), its rates larger by ORIGINAL_PERIOD/period for the same strain per
+    cycle, so the threshold is 0.1 * ORIGINAL_PERIOD/period 1/s unscaled (rate * period <
+    0.5)."""
+    s = original_samples(series, period, offset)
     t = s["time"]
     cycle = np.floor(t / period).astype(int) + 1
     start = (cycle - 1) * period
     friction = tau / s["N_applied"]
+    velocity = shear_velocity(s["vx_top"])
     rate = shear_strain_rate(s["vx_top"], s["z_wall"]) * rate_scale
-    kept = (rate != 0) & (friction < MAX_FRICTION) & \
-        (rate < MAX_RATE * ORIGINAL_PERIOD / period * rate_scale) & \
-        (t > start + CREEP_PHASES[0] * period) & (t < start + CREEP_PHASES[1] * period)
-    return {"time": t, "cycle": cycle, "friction": friction, "rate": rate, "kept": kept}
+    cuts = {"rate 0": rate == 0,
+            "tau/N >= 0.38": ~(friction < MAX_FRICTION),
+            "rate >= 0.1": ~(rate < MAX_RATE * ORIGINAL_PERIOD / period * rate_scale),
+            "outside 1-3 s": ~((t > start + CREEP_PHASES[0] * period) &
+                               (t < start + CREEP_PHASES[1] * period))}
+    kept = ~np.any(list(cuts.values()), axis=0)
+    return {"time": t, "cycle": cycle, "phase": t / period - (cycle - 1), "friction": friction,
+            "rate": rate, "velocity": velocity, "cuts": cuts, "kept": kept}
 
 
-def creep_fit(series, period, tau, rate_scale=1.0, first_cycle=2, last_cycle=None):
+def fit_samples(series, period, tau, rate_scale=1.0, first_cycle=2, last_cycle=None, offset=0):
+    """the original's samples (at `offset`) as records {time, cycle, phase, friction, rate,
+    velocity, cut}: cut "kept" for each sample the creep fit of cycles first_cycle ..
+    last_cycle keeps (creep_fit), else the cuts of CUTS it fails, joined by ", " (a sample
+    can fail several)"""
+    p = creep_samples(series, period, tau, rate_scale, offset)
+    outside = p["cycle"] < first_cycle
+    if last_cycle is not None:
+        outside |= p["cycle"] > last_cycle
+    cuts = dict(p["cuts"], cycle=outside)
+    names = [name for name, _ in CUTS]
+    return [{"time": p["time"][i], "cycle": int(p["cycle"][i]), "phase": p["phase"][i],
+             "friction": p["friction"][i], "rate": p["rate"][i],
+             "velocity": p["velocity"][i],
+             "cut": ", ".join(n for n in names if cuts[n][i]) or "kept"}
+            for i in range(len(p["time"]))]
+
+
+def fit_rheology2(friction, rate):
+    """scipy.optimize.curve_fit(creep_rheology2, tau/N, rate) as
+    python/halfshear-darcy-rate-dependence.py lines 118-120 call it (the default p0, linear
+    space): {n, A, n_sigma, A_sigma (1 sigma: sqrt of pcov's diagonal)}, nan for fewer than 3
+    samples or a fit that does not converge (RuntimeError)"""
+    out = {"n": np.nan, "A": np.nan, "n_sigma": np.nan, "A_sigma": np.nan}
+    if len(rate) < 3:
+        return out
+    try:
+        popt, pcov = scipy.optimize.curve_fit(creep_rheology2, friction, rate)
+    except RuntimeError:            # no convergence from the default p0
+        return out
+    sigma = np.sqrt(np.diag(pcov))
+    return dict(n=popt[0], A=popt[1], n_sigma=sigma[0], A_sigma=sigma[1])
+
+
+def creep_fit(series, period, tau, rate_scale=1.0, first_cycle=2, last_cycle=None, offset=0):
     """the original's creep exponent (python/halfshear-darcy-rate-dependence.py lines 69-120):
-    scipy.optimize.curve_fit(creep_rheology2, tau/N, rate) as lines 118-120, the default p0,
-    in linear space, on the samples of cycles first_cycle..last_cycle (all from the second by
-    default, as lines 101-111) that creep_samples keeps. Returns {n, A, n_sigma, A_sigma (1
-    sigma: sqrt of pcov's diagonal), count, time, friction, rate (the samples fitted)}; n, A
-    and their sigmas are nan for fewer than 3 samples or a fit that does not converge."""
-    p = creep_samples(series, period, tau, rate_scale)
+    fit_rheology2 on the samples of cycles first_cycle..last_cycle (all from the second by
+    default, as lines 101-111) that creep_samples keeps (at `offset`, original_samples).
+    Returns {n, A, n_sigma, A_sigma, count, time, friction, rate (the samples fitted)}"""
+    p = creep_samples(series, period, tau, rate_scale, offset)
     use = p["kept"] & (p["cycle"] >= first_cycle)
     if last_cycle is not None:
         use &= p["cycle"] <= last_cycle
     out = {"count": int(use.sum()), "time": p["time"][use], "friction": p["friction"][use],
-           "rate": p["rate"][use], "n": np.nan, "A": np.nan, "n_sigma": np.nan,
-           "A_sigma": np.nan}
-    if out["count"] < 3:
-        return out
-    try:
-        popt, pcov = scipy.optimize.curve_fit(creep_rheology2, out["friction"], out["rate"])
-    except RuntimeError:            # no convergence from the default p0
-        return out
-    sigma = np.sqrt(np.diag(pcov))
-    out.update(n=popt[0], A=popt[1], n_sigma=sigma[0], A_sigma=sigma[1])
+           "rate": p["rate"][use]}
+    out.update(fit_rheology2(out["friction"], out["rate"]))
     return out
+
+
+LEAVE_OUT = 5              # the fastest samples left out one by one (leave_fastest_out)
+
+
+def leave_fastest_out(friction, rate, most=LEAVE_OUT):
+    """fit_rheology2 again without the k fastest samples, k = 0 .. most: [{left_out, count, n,
+    n_sigma, A}] (n nan: no fit). In linear space a few fastest samples decide the fit (see
+    creep_fit_minimum); its n over k = 1 .. most says how far they alone move it"""
+    order = np.argsort(rate, kind="stable")[::-1]
+    rows = []
+    for k in range(most + 1):
+        keep = np.sort(order[k:])
+        fit = fit_rheology2(friction[keep], rate[keep])
+        rows.append(dict(fit, left_out=k, count=len(keep)))
+    return rows
+
+
+def leave_out_range(rows):
+    """(lowest n, highest n, fits that failed) over the rows of leave_fastest_out with k >= 1
+    (None, None where none converged)"""
+    n = np.array([r["n"] for r in rows if r["left_out"] >= 1], dtype=float)
+    good = n[~np.isnan(n)]
+    return (float(good.min()) if len(good) else None, float(good.max()) if len(good) else None,
+            int(np.isnan(n).sum()))
 
 
 def least_squares_profile(friction, rate, exponents):
@@ -174,13 +264,13 @@ def creep_fit_as_run(friction, rate):
             "stopped": np.isnan(second["params"][0]), "first": first, "second": second}
 
 
-def creep_fit_per_cycle(series, period, tau, rate_scale=1.0):
+def creep_fit_per_cycle(series, period, tau, rate_scale=1.0, offset=0):
     """creep_fit of each whole cycle alone, the first included: the commented-out block of
     python/halfshear-darcy-rate-dependence.py lines 136-253 (fits of 1-3 s, 6-8 s, ... at
     lines 137-220). That block compares the scaled rate with 0.1, without line 100's factor
     t_DEM_to_t_real (with the paper's 5.8e-5, a threshold that keeps every creeping sample);
     here the pooled fit's conditions, so that the cycles' samples are the pooled ones"""
-    return [dict(creep_fit(series, period, tau, rate_scale, k, k), cycle=k)
+    return [dict(creep_fit(series, period, tau, rate_scale, k, k, offset), cycle=k)
             for k in range(1, whole_cycles(series["time"], period) + 1)]
 
 

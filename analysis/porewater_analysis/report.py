@@ -5,10 +5,14 @@ import os
 import numpy as np
 
 from . import cycles as ours
+from . import landings as landing
 from . import original
 from .timeseries import load, run_parameters, whole_cycles
 
 MU_F = 2.415e-7            # Pa s: the reduced example's default bed (in.bed_original)
+# the original run's own data file (its count every 0.01 s), read beside each landing
+DATA_FILE = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                          "bench", "common", "original_run_contacts.txt"))
 # what a run folder without checkpoint_params.txt (or without a key) is taken to have run
 DEFAULTS = {"freq": 1.0 / ours.PERIOD, "tau": ours.TAU, "amp": ours.AMP, "mu_f": MU_F}
 
@@ -45,9 +49,29 @@ def original_row(fit, stuck, counted):
                 z_min_phase=z.get("min_phase"))
 
 
-def analyse_series(series, period, tau, amp, rate_scale, cycles=None):
+def leave_out(series, period, tau, rate_scale, count):
+    """the original's fit of each whole cycle and pooled over cycles 2 to `count`, on each grid
+    of original.sample_grid, its fastest samples left out (original.leave_fastest_out):
+    [{fit ("cycle k" or "2-count pooled"), offset, count, rows}]"""
+    _, stride = original.sample_grid(series["time"], period)
+    fits = [("cycle %d" % k, k, k) for k in range(1, count + 1)]
+    if count >= 2:
+        fits.append(("%d-%d pooled" % (2, count), 2, count))
+    out = []
+    for name, first, last in fits:
+        for j in range(stride):
+            f = original.creep_fit(series, period, tau, rate_scale, first, last, j)
+            out.append({"fit": name, "offset": j, "count": f["count"],
+                        "rows": original.leave_fastest_out(f["friction"], f["rate"])})
+    return out
+
+
+def analyse_series(series, period, tau, amp, rate_scale, cycles=None, data=None):
     """{"cycles": [{"cycle", "ours", "original"} a whole cycle], "pooled": {"cycles",
-    "ours", "original"} over cycles 2 to the last}, at most `cycles` cycles. Ours:
+    "ours", "original"} over cycles 2 to the last, "landings" (landings.landings, beside the
+    original run's data file `data`, (t, z) of landings.read_data_file, where given),
+    "leave_out" (leave_out), "fit_samples" (original.fit_samples of the pooled fit, every
+    grid: each record with its offset)}, at most `cycles` cycles. Ours:
     cycles.factor_metrics and creep_points/power_law; the original's: original.creep_fit
     (per cycle, pooled), stick and coordination"""
     if cycles is not None:
@@ -66,16 +90,27 @@ def analyse_series(series, period, tau, amp, rate_scale, cycles=None):
     pooled = {"cycles": (2, count), "ours": dict(zip(
         ("n", "n_half95", "windows", "dropped", "r2"), law), points=later) if law else None,
         "original": original.creep_fit(series, period, tau, rate_scale, 2)}
-    return {"cycles": rows, "pooled": pooled}
+    _, stride = original.sample_grid(series["time"], period)
+    samples = [dict(r, offset=j) for j in range(stride)
+               for r in original.fit_samples(series, period, tau, rate_scale, 2, offset=j)]
+    return {"cycles": rows, "pooled": pooled,
+            "landings": landing.landings(series, period, data),
+            "leave_out": leave_out(series, period, tau, rate_scale, count),
+            "fit_samples": samples}
 
 
-def analyse_run(run_dir, cycles=None):
+def analyse_run(run_dir, cycles=None, data_file=DATA_FILE):
     """analyse_series on run_dir/timeseries.txt with the run's own parameters
-    (checkpoint_params.txt), plus "parameters" and "notes" (the values not recorded)"""
+    (checkpoint_params.txt), the landings beside the original run's data file (`data_file`;
+    None or a missing file: without it), plus "parameters", "notes" (the values not recorded)
+    and "data_file" (the one read, or None)"""
     params, notes = parameters(run_dir)
+    if data_file is not None and not os.path.exists(data_file):
+        data_file = None
+    data = landing.read_data_file(data_file) if data_file else None
     result = analyse_series(load(os.path.join(run_dir, "timeseries.txt")), cycles=cycles,
-                            **params)
-    return dict(result, parameters=params, notes=notes)
+                            data=data, **params)
+    return dict(result, parameters=params, notes=notes, data_file=data_file)
 
 
 def cell(value, f):
@@ -97,7 +132,7 @@ def intervals(spans, most=3):
     return (text + (" +%d more" % (len(spans) - most) if len(spans) > most else "")) or "none"
 
 
-def markdown(result, run_dir):
+def markdown(result, run_dir, samples_file="PREFIX_fit_samples.txt"):
     p = result["parameters"]
     lines = ["# porewater_analysis of `%s`" % run_dir, "",
              "Period %g s, tau %g Pa, A %g Pa, the original's rate scale mu_f/1.787e-3 = %.3g."
@@ -128,6 +163,77 @@ def markdown(result, run_dir):
     first, last = result["pooled"]["cycles"]
     lines.append("| %d-%d pooled | %s | %s |" % (first, last, our_n(result["pooled"]["ours"]),
                                                  original_n(result["pooled"]["original"])) + " |" * 8)
+    return lines + landing_lines(result) + leave_out_lines(result, samples_file)
+
+
+def collapse_cell(c):
+    return "none" if c is None else "%.3f (%.3f s; %.3f)" % (c["min"], c["time"], c["after_min_n"])
+
+
+def landing_lines(result):
+    """the table of landings.landings: every row, each grid, the data file"""
+    rows = result.get("landings") or []
+    if not rows:
+        return []
+    stride = rows[0]["stride"]
+    data = result.get("data_file")
+    lines = ["", "## The landings: the original's count at its collapse", "",
+             "Landing k: the minimum of the original's count (coordination_original) within "
+             "%g cycle of t = k T, a quarter cycle after the minimum of N (landings.py); a "
+             "landing whose window the rows do not cover is left out. Its value (t; cycles "
+             "after the minimum of N) over every row; on %s (original.sample_grid; offset 0: "
+             "the original's samples, those of the table above); in the original run's data "
+             "file (%s) at the same landing." % (
+                 landing.HALF_WIDTH, "the rows at the original's cadence" if stride == 1 else
+                 "each grid of every %s row at the original's cadence" % (
+                     "second" if stride == 2 else "%d-th" % stride),
+                 "`%s`" % os.path.relpath(data) if data else "not read"), "",
+             "| landing | window (s) | every row | " +
+             " | ".join("grid offset %d%s" % (j, " (the original's samples)" if j == 0 else "")
+                        for j in range(stride)) + " | the data file |",
+             "|" + "---|" * (4 + stride)]
+    for r in rows:
+        lines.append("| %d | %.2f-%.2f | %s | %s | %s |" % (
+            r["landing"], r["window"][0], r["window"][1], collapse_cell(r["every_row"]),
+            " | ".join(collapse_cell(c) for c in r["grid"]), collapse_cell(r["data_file"])))
+    return lines
+
+
+def leave_out_lines(result, samples_file="PREFIX_fit_samples.txt"):
+    """the table of leave_out: n of the original's fit on each grid, its fastest left out"""
+    rows = result.get("leave_out") or []
+    if not rows:
+        return []
+    most = original.LEAVE_OUT
+    lines = ["", "## The original's fit, its fastest samples left out", "",
+             "n of the original's fit (curve_fit of A (tau/N)^n, original.fit_rheology2) on "
+             "each grid of rows at its cadence (offset 0: the table's), again without its k "
+             "fastest samples, k = 1-%d (original.leave_fastest_out), and the range of those. "
+             "Every sample with the cut that drops it: `%s`." % (most, samples_file), "",
+             "| fit | grid offset | samples | n | n without the k fastest, k = 1-%d | "
+             "range k = 1-%d |" % (most, most), "|---|---|---|---|---|---|"]
+    for r in rows:
+        n = [cell(x["n"], "%.2f").replace("none", "no fit") for x in r["rows"]]
+        lo, hi, failed = original.leave_out_range(r["rows"])
+        span = "none" if lo is None else "%.2f-%.2f" % (lo, hi)
+        if failed:
+            span += " (%d no fit)" % failed
+        lines.append("| %s | %d | %d | %s | %s | %s |" % (r["fit"], r["offset"], r["count"], n[0],
+                                                       ", ".join(n[1:]), span))
+    return lines
+
+
+def fit_samples_lines(result):
+    """the text of PREFIX_fit_samples.txt: every original sample of the pooled fit, each grid"""
+    lines = ["# the original's samples of its creep fit pooled over cycles %d-%d, every grid of "
+             "rows at its cadence (offset 0: the fit's; original.fit_samples): the cut that drops "
+             "each, or kept. Cuts (python/halfshear-darcy-rate-dependence.py at 116df3b):"
+             % tuple(result["pooled"]["cycles"])]
+    lines += ["#   %s: %s" % cut for cut in original.CUTS]
+    lines.append("# offset time_s cycle tau/N rate_scaled_1/s cut")
+    for r in result["fit_samples"]:
+        lines.append("%d %.5f %d %.6f %.5e %s" % (r["offset"], r["time"], r["cycle"],
+                                                  r["friction"], r["rate"], r["cut"]))
     return lines
 
 

@@ -236,6 +236,23 @@ class RunFolder(unittest.TestCase):
             self.assertIn("| 2-%d pooled | " % CYCLES, table)
             self.assertIn("7.00 ± 0.00", table)
             self.assertIn("Period 2 s", table)
+            # the landings (1 and 2: landing 3's window runs past the rows) and the fit again
+            # without its fastest samples, per cycle and pooled, on both grids
+            self.assertIn("## The landings", table)
+            for k in (1, 2):
+                self.assertIn("\n| %d | " % k, table.split("## The landings")[1])
+            self.assertNotIn("\n| 3 | ", table.split("## The landings")[1])
+            left_out = table.split("## The original's fit, its fastest samples left out")[1]
+            for fit in ["cycle %d" % k for k in range(1, CYCLES + 1)] + ["2-%d pooled" % CYCLES]:
+                for offset in (0, 1):
+                    self.assertIn("| %s | %d | " % (fit, offset), left_out)
+            # every sample of both grids with its cut; those kept on grid 0 are the pooled fit's
+            with open(os.path.join(d, "analysis_fit_samples.txt")) as f:
+                rows = [line.split(None, 5) for line in f if not line.startswith("#")]
+            self.assertEqual(len(rows), len(series["time"]))
+            kept = [float(r[1]) for r in rows if r[0] == "0" and r[5].strip() == "kept"]
+            pooled = original.creep_fit(series, PERIOD, TAU, RATE_SCALE)
+            np.testing.assert_allclose(kept, pooled["time"], atol=1e-5)
 
 
 if __name__ == "__main__":
