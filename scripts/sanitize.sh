@@ -33,7 +33,7 @@ if [ "$what" != plugin ]; then
   cmake -S "$REPO" -B "$REPO/build-sanitize-core" -G Ninja -D CMAKE_BUILD_TYPE=RelWithDebInfo \
     -D CMAKE_CXX_COMPILER_LAUNCHER=ccache -D PW_HOSTS=none -D "CMAKE_CXX_FLAGS=$FLAGS" >/dev/null
   cmake --build "$REPO/build-sanitize-core" -j "$JOBS"
-  (cd "$REPO/build-sanitize-core" && ctest --output-on-failure -j "${PW_TEST_JOBS:-2}" -E '^analysis\.')
+  (cd "$REPO/build-sanitize-core" && ctest --output-on-failure -j "${PW_TEST_JOBS:-2}" -E '^(analysis|pages)\.')
 fi
 
 if [ "$what" != core ]; then

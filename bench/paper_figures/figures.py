@@ -2,7 +2,7 @@
 """Does examples/tidal_shear reproduce Damsgaard et al. (2016)? The paper's results, measured
 on the reduced case (examples/tidal_shear/README.md: the groups it keeps).
 
-Part "cycle" (Figure 3): the example for 4 forcing cycles (10 s, 4,672,897 steps) with the
+Part "cycle" (Figure 3): the example for 4 forcing cycles (10 s, 4,662,297 steps) with the
   pore water (k_c 3.5e-13, the default), dry (fluid 0), and with k_c 3.5e-14 and 3.5e-15
   (the paper's low-permeability twin). Per cycle: slip onset and end (the top layer's
   velocity, smoothed over 0.025 s, above / below 1 cm/s), peak and mean slip velocity, slip
