@@ -139,8 +139,7 @@ class FixDarcyPressureKokkos<DeviceType>::Grains final : public porewater::Grain
     }
     const porewater::FluidForceField device_field{
         d_table.data(), d_cell_gradient.data(), d_cell_porosity.data(),
-        {field.rho_g[0], field.rho_g[1], field.rho_g[2]}, field.horizontal_only_bit,
-        field.seepage};
+        {field.rho_g[0], field.rho_g[1], field.rho_g[2]}, field.horizontal_only_bit};
     const int nlocal = fix->atom->nlocal;
     atomKK->sync(execution(), X_MASK | F_MASK | RADIUS_MASK | MASK_MASK);
     fix->k_fluid_force.template sync<DeviceType>();

@@ -203,16 +203,16 @@ PW_INLINE void corner_vectors(const double *field, const double *scalar, const i
   }
 }
 
-// The table of corner gradients per block (BLOCK_GRADIENT values a block) from the
-// cell-centre pressure gradient, each corner padded with its cell's porosity, once per
-// fluid step.
-inline void fill_gradient_table(const CouplingGrid &cg, const double *gradient,
+// The table of corner force gradients per block (BLOCK_GRADIENT values a block) from the
+// cells' force gradient (fill_force_gradient), each corner padded with its cell's porosity,
+// once per fluid step.
+inline void fill_gradient_table(const CouplingGrid &cg, const double *force_gradient,
                                 const double *porosity, double *table)
 {
   for (int block = 0; block < cg.blocks.count(); ++block) {
     int idx[8];
     corner_cells(cg.geom, cg.blocks.base(block), idx);
-    corner_vectors(gradient, porosity, idx, table + CouplingGrid::BLOCK_GRADIENT * block);
+    corner_vectors(force_gradient, porosity, idx, table + CouplingGrid::BLOCK_GRADIENT * block);
   }
 }
 
@@ -222,50 +222,61 @@ inline void fill_gradient_table(const CouplingGrid &cg, const double *gradient,
 // through them, -V grad p/(1 - phi) (Biot's, Terzaghi's sigma' = sigma - p).
 enum Seepage { SEEPAGE_PRESSURE = 0, SEEPAGE_FULL = 1 };
 
-// the factor on -V grad p of a grain at porosity phi (clamped below 1 by the grid)
+// A cell's factor on grad p under `seepage`, at its porosity phi (clamped below 1 by the
+// solver): 1, or 1/(1 - phi)
 PW_INLINE double seepage_factor(int seepage, double porosity)
 {
   return seepage == SEEPAGE_FULL ? 1.0 / (1.0 - porosity) : 1.0;
 }
 
-// Fluid force f = -V (F grad p + rho_f g) on a grain of volume V: grad p and phi
-// interpolated with the stencil weights w from the corners' gradients and porosities
-// (corner_vectors), F = seepage_factor(seepage, phi); the second term is buoyancy
-// (rho_g = rho_f g). With SEEPAGE_PRESSURE, F = 1 exactly.
+// The cells' force gradient, what the grains' force interpolates: grad p_c times the cell's
+// seepage_factor. A grain of volume V_i with weights w_ic takes -V_i sum_c w_ic g_c, and the
+// same weights built the cell's solid volume sum_i w_ic V_i = (1 - phi_c) V_cell: summed over
+// the grains, SEEPAGE_FULL gives -sum_c grad p_c V_cell, the water's whole force on the
+// cells, and SEEPAGE_PRESSURE -sum_c grad p_c (1 - phi_c) V_cell, to round-off wherever phi_c
+// is not clamped and the grains have not moved since the deposit (doc/model.md §3).
+inline void fill_force_gradient(int ncells, int seepage, const double *gradient,
+                                const double *porosity, double *force_gradient)
+{
+  for (int c = 0; c < ncells; ++c) {
+    const double factor = seepage_factor(seepage, porosity[c]);
+    for (int d = 0; d < 3; ++d) force_gradient[3 * c + d] = factor * gradient[3 * c + d];
+  }
+}
+
+// Fluid force f = -V (g + rho_f g) on a grain of volume V: the force gradient g interpolated
+// with the stencil weights w from the corners' (corner_vectors of fill_force_gradient's);
+// the second term is buoyancy (rho_g = rho_f g)
 PW_INLINE void fluid_force_from_corners(const double corner_gradient[32], const double rho_g[3],
-                                        const double w[8], double volume, int seepage,
-                                        double f[3])
+                                        const double w[8], double volume, double f[3])
 {
   double sum[4] = {0.0, 0.0, 0.0, 0.0};
   for (int c = 0; c < 8; ++c)
     for (int d = 0; d < 4; ++d) sum[d] += w[c] * corner_gradient[4 * c + d];
-  const double factor = seepage_factor(seepage, sum[3]);
-  for (int d = 0; d < 3; ++d) f[d] = -volume * (factor * sum[d] + rho_g[d]);
+  for (int d = 0; d < 3; ++d) f[d] = -volume * (sum[d] + rho_g[d]);
 }
 
-// The same for a grain at x, from the cell-centre gradients (interleaved xyz) and porosities.
-PW_INLINE void fluid_force_from_cells(const GridGeom &g, const double *pressure_gradient,
+// The same for a grain at x, from the cells' force gradients (interleaved xyz) and porosities.
+PW_INLINE void fluid_force_from_cells(const GridGeom &g, const double *force_gradient,
                                       const double *porosity, const double rho_g[3], double x0,
-                                      double x1, double x2, double volume, int seepage,
-                                      double f[3])
+                                      double x1, double x2, double volume, double f[3])
 {
   int idx[8];
   double w[8], corner_gradient[32];
   stencil(g, x0, x1, x2, idx, w);
-  corner_vectors(pressure_gradient, porosity, idx, corner_gradient);
-  fluid_force_from_corners(corner_gradient, rho_g, w, volume, seepage, f);
+  corner_vectors(force_gradient, porosity, idx, corner_gradient);
+  fluid_force_from_corners(corner_gradient, rho_g, w, volume, f);
 }
 
-// What the force on the grains reads after a fluid step: the per-block corner gradients
-// and porosities and, for grains outside every block, the cell-centre gradients and
-// porosities; rho_f g; the seepage force (Seepage).
+// What the force on the grains reads after a fluid step: the per-block corner force
+// gradients and porosities and, for grains outside every block, the cells' force gradients
+// and porosities (fill_force_gradient: the seepage force is in them); rho_f g.
 struct FluidForceField {
   const double *gradient_table;
   const double *cell_gradient;
   const double *cell_porosity;
   double rho_g[3];
   int horizontal_only_bit;    // grains of this group bit get no vertical fluid force (novertical)
-  int seepage;
 };
 
 // The fluid force on a grain at x with block `block` and weights w (grain_stencil or
@@ -276,10 +287,10 @@ PW_INLINE void grain_fluid_force(const CouplingGrid &cg, const FluidForceField &
 {
   if (block >= 0)
     fluid_force_from_corners(field.gradient_table + CouplingGrid::BLOCK_GRADIENT * block,
-                             field.rho_g, w, volume, field.seepage, f);
+                             field.rho_g, w, volume, f);
   else
     fluid_force_from_cells(cg.geom, field.cell_gradient, field.cell_porosity, field.rho_g, x0,
-                           x1, x2, volume, field.seepage, f);
+                           x1, x2, volume, f);
 }
 
 // ---------------------------------------------------------------------------------------

@@ -100,14 +100,14 @@ DarcyFluid::DarcyFluid(const DarcySettings &settings, const GridGeom &geom, cons
   if (!settings_.z_top_given) settings_.z_top = NumberOrVariable{solver_->z_grid_top(), ""};
   sums_.assign(grid_.sums_size(), 0.0);
   gradient_table_.assign(grid_.gradient_table_size(), 0.0);
+  force_gradient_.assign(3 * (size_t) solver_->ncells(), 0.0);
   field_ = FluidForceField{gradient_table_.data(),
-                           solver_->pressure_gradient().data(),
+                           force_gradient_.data(),
                            solver_->porosity().data(),
                            {settings.density * settings.gravity[0],
                             settings.density * settings.gravity[1],
                             settings.density * settings.gravity[2]},
-                           0,
-                           settings.seepage};
+                           0};
 }
 
 DarcyFluid::~DarcyFluid()
@@ -242,11 +242,14 @@ void DarcyFluid::start(FluidHost &host, GrainBackend &grains, long long step)
   started_ = true;
 }
 
-// the force field of the fluid state now: the corner gradients and porosities per block, and
-// the cell porosity (update_porosity swaps the solver's porosity arrays)
+// the force field of the fluid state now: the cells' force gradients (the seepage force's
+// factor in them), the corner ones and porosities per block, and the cell porosity
+// (update_porosity swaps the solver's porosity arrays)
 void DarcyFluid::refresh_force_field()
 {
-  fill_gradient_table(grid_, solver_->pressure_gradient().data(), solver_->porosity().data(),
+  fill_force_gradient(solver_->ncells(), settings_.seepage, solver_->pressure_gradient().data(),
+                      solver_->porosity().data(), force_gradient_.data());
+  fill_gradient_table(grid_, force_gradient_.data(), solver_->porosity().data(),
                       gradient_table_.data());
   field_.cell_porosity = solver_->porosity().data();
   field_changed_ = true;

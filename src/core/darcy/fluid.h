@@ -153,7 +153,8 @@ class DarcyFluid {
   std::string id_;
   std::unique_ptr<DarcySolver> solver_;
   std::vector<double> sums_;             // this rank's deposits, then everyone's cell deposits
-  std::vector<double> gradient_table_;   // per block corner gradients of the last fluid step
+  std::vector<double> force_gradient_;   // the cells' force gradients (fill_force_gradient)
+  std::vector<double> gradient_table_;   // per block corner force gradients of the last fluid step
   FluidForceField field_;
   bool field_changed_;
   bool stencils_kept_;       // the last deposit's stencils are those of the grains now
