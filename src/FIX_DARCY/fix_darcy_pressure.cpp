@@ -87,9 +87,10 @@ void FixDarcyPressure::init()
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "fix darcy/pressure does not support run_style respa");
   porewater::LammpsVariables variables(lmp);
-  top.resolve(variables, "fix darcy/pressure", "top");
-  z_top.resolve(variables, "fix darcy/pressure", "ztop");
-  bottom.resolve(variables, "fix darcy/pressure", "bottom");
+  const bool global = !fluid->settings().variables_read_atoms;
+  top.resolve(variables, "fix darcy/pressure", "top", global);
+  z_top.resolve(variables, "fix darcy/pressure", "ztop", global);
+  bottom.resolve(variables, "fix darcy/pressure", "bottom", global);
   // the grid was laid over the box when the fix was defined and cannot follow it
   for (int i = 0; i < modify->nfix; ++i)
     if (modify->fix[i]->box_change & (BOX_CHANGE_X | BOX_CHANGE_Y | BOX_CHANGE_SHAPE))

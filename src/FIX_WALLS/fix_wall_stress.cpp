@@ -63,7 +63,7 @@ void FixWallStress::init()
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix wall/stress does not support run_style respa");
   porewater::LammpsVariables variables(lmp);
-  stress.resolve(variables, "Fix wall/stress", "stress");
+  stress.resolve(variables, "Fix wall/stress", "stress", !wall->settings().variables_read_atoms);
   wall->init(*this, update->dt);
 }
 

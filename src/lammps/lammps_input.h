@@ -10,13 +10,16 @@
 #include "comm.h"
 
 #include "error.h"
+#include "info.h"
 #include "input.h"
 #include "lammps.h"
 #include "modify.h"
 #include "variable.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace porewater {
@@ -60,7 +63,7 @@ inline std::vector<double> read_restart_state(LAMMPS_NS::LAMMPS *lmp, const Rest
 // LAMMPS' equal-style variables, for EqualValue
 class LammpsVariables final : public VariableHost {
  public:
-  explicit LammpsVariables(LAMMPS_NS::LAMMPS *lmp) : lmp_(lmp) {}
+  explicit LammpsVariables(LAMMPS_NS::LAMMPS *lmp) : lmp_(lmp), read_(false) {}
   int find(const std::string &name) override { return lmp_->input->variable->find(name.c_str()); }
   bool is_equal_style(int index) override { return lmp_->input->variable->equalstyle(index) != 0; }
   double evaluate(int index, long long next_step) override
@@ -71,9 +74,53 @@ class LammpsVariables final : public VariableHost {
     return value;
   }
   void stop(const std::string &message) override { lmp_->error->all(FLERR, message); }
+  // The definitions as `info variables` writes them, read once (Variable keeps them private):
+  // "Variable[  0]: name,  style = equal,  def = FORMULA VALUE"; rank 0 writes and reads the
+  // file, every rank gets the text
+  std::string formula(const std::string &name) override
+  {
+    if (!read_) read_definitions();
+    const std::string head = "]: " + name + ",";
+    size_t at = definitions_.find(head);
+    if (at == std::string::npos) return "";
+    const size_t def = definitions_.find("def =", at), end = definitions_.find('\n', at);
+    if (def == std::string::npos || def > end) return "";
+    return definitions_.substr(def + 5, end - def - 5);
+  }
 
  private:
+  void read_definitions()
+  {
+    read_ = true;
+    std::string text;
+    if (lmp_->comm->me == 0) {
+      char path[] = "/tmp/porewater_variables_XXXXXX";
+      const int fd = mkstemp(path);
+      if (fd >= 0) {
+        close(fd);
+        std::vector<std::string> words = {"variables", "out", "overwrite", path};
+        std::vector<char *> args;
+        for (std::string &w : words) args.push_back(&w[0]);
+        LAMMPS_NS::Info(lmp_).command((int) args.size(), args.data());
+        if (FILE *in = std::fopen(path, "r")) {
+          char buffer[4096];
+          size_t n;
+          while ((n = std::fread(buffer, 1, sizeof(buffer), in)) > 0) text.append(buffer, n);
+          std::fclose(in);
+        }
+        std::remove(path);
+      }
+    }
+    int size = (int) text.size();
+    MPI_Bcast(&size, 1, MPI_INT, 0, lmp_->world);
+    text.resize(size);
+    if (size > 0) MPI_Bcast(&text[0], size, MPI_CHAR, 0, lmp_->world);
+    definitions_ = text;
+  }
+
   LAMMPS_NS::LAMMPS *lmp_;
+  bool read_;
+  std::string definitions_;
 };
 
 }    // namespace porewater

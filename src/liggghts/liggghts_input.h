@@ -71,6 +71,8 @@ class LiggghtsVariables final : public porewater::VariableHost {
     return value;
   }
   void stop(const std::string &message) override { error_all(lmp_, FLERR, message); }
+  // no /kk in LIGGGHTS: `variables global` changes nothing there, and is not checked
+  std::string formula(const std::string &) override { return ""; }
 
  private:
   LAMMPS_NS::LAMMPS *lmp_;

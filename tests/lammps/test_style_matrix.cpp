@@ -114,6 +114,10 @@ StyleCase fix_darcy_pressure(const std::string &options = "")
       {"fix bad all darcy/pressure grid 2 0 4" + unit, "grid expects an integer >= 1, got '0'"},
       {fix + unit + " interpolate always", "interpolate expects step or fluid, got 'always'"},
       {fix + unit + " variables time", "variables expects atoms or global, got 'time'"},
+      {"run 0", "variables global, but variable top_p for top reads per-atom data (pe, a "
+                "thermo keyword over the atoms in variable pe_top)",
+       "variable pe_top equal pe\nvariable top_p equal v_pe_top\n" + fix + unit +
+           " top v_top_p variables global\n"},
       {fix + unit + " novertical", "novertical expects a group ID, but the command ends there"},
       // groups are looked up when the run starts
       {"run 0", "novertical group nope does not exist", fix + unit + " novertical nope\n"},
@@ -187,6 +191,10 @@ StyleCase fix_wall_stress(const std::string &name, const std::string &kokkos_opt
        "plate_damping, variables)"},
       {fix + "z 8 stress 0.5 mass 6 kn 100 variables time",
        "variables expects atoms or global, got 'time'"},
+      {"variable top equal 2+0.5*bound(all,zmax)\n" + fix +
+           "z 8 stress v_top mass 6 kn 100 variables global\nrun 0",
+       "variables global, but variable top for stress reads per-atom data (bound(), a group "
+       "function); give variables atoms"},
       {fix + "z 8 stress v_nope mass 6 kn 100\nrun 0", "variable nope for stress does not exist"},
       {"variable perat atom x\n" + fix + "z 8 stress v_perat mass 6 kn 100\nrun 0",
        "variable perat for stress is not equal-style"},

@@ -2,6 +2,7 @@
 // state (src/core/input), without a host: what each bad input says, and that a state of
 // another format or size is refused with a message saying how it differs.
 #include "darcy/fluid.h"
+#include "input/formula.h"
 #include "input/keywords.h"
 #include "input/restart_state.h"
 #include "input/settings.h"
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -218,4 +220,26 @@ TEST(DarcyFluid, MemoryIsWhatItHoldsAndATooLargeGridStopsBeforeAllocating)
           << e.what();
     }
   }
+}
+
+TEST(Formula, TheFirstTermThatReadsPerAtomDataIsNamed)
+{
+  std::map<std::string, std::string> variables = {
+      {"zwall", "f_wall[1]"}, {"mid", "xcm(all,z)+1"}, {"deep", "v_mid*2"}, {"t2", "time*time"}};
+  auto of = [&variables](const std::string &name) {
+    const auto it = variables.find(name);
+    return it == variables.end() ? std::string() : it->second;
+  };
+  // time, step, numbers (an exponent is not a name), math functions, the box, fixes' values
+  for (const char *none : {"8.0e4+7.0e4*sin(2*PI*0.4*time)", "v_zwall", "v_t2+step*dt",
+                           "1e5*lx*ly", "f_wall[3]+f_fl[1]", "exp(-2.5e-3*elapsed)", "ramp(0,1)"})
+    EXPECT_EQ(atom_data_read_by(none, of), "") << none;
+  EXPECT_EQ(atom_data_read_by("1+xcm(all,z)", of), "xcm(), a group function");
+  EXPECT_EQ(atom_data_read_by("2*x[12]", of), "x[], a per-atom value");
+  EXPECT_EQ(atom_data_read_by("c_thermo_press/3", of), "c_thermo_press, a compute");
+  EXPECT_EQ(atom_data_read_by("pe+1", of), "pe, a thermo keyword over the atoms");
+  EXPECT_EQ(atom_data_read_by("v_deep", of), "xcm(), a group function in variable mid in variable deep");
+  EXPECT_EQ(atom_data_read_by("v_nowhere", of), "");    // an unknown formula names nothing
+  // a name that only contains a keyword is not it
+  EXPECT_EQ(atom_data_read_by("v_temperature+v_pressure", of), "");
 }

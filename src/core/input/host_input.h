@@ -5,6 +5,7 @@
 #ifndef PW_INPUT_HOST_INPUT_H
 #define PW_INPUT_HOST_INPUT_H
 
+#include "input/formula.h"
 #include "input/keywords.h"
 
 #include <string>
@@ -41,6 +42,9 @@ class VariableHost {
   virtual double evaluate(int index, long long next_step) = 0;
   // called on every rank with the same message: stop the run
   virtual void stop(const std::string &message) = 0;
+  // the formula of an equal-style variable as the input gave it, the same on every rank;
+  // "" where the host cannot tell
+  virtual std::string formula(const std::string &name) = 0;
 
  protected:
   ~VariableHost() = default;
@@ -52,8 +56,10 @@ class EqualValue {
   EqualValue() = default;
   explicit EqualValue(const NumberOrVariable &v) : given_(v) {}
 
-  // the variable must exist and be equal-style by the time the run starts
-  void resolve(VariableHost &host, const std::string &command, const char *keyword)
+  // the variable must exist and be equal-style by the time the run starts; `global`: the
+  // style's `variables global` (its formula must name no per-atom data)
+  void resolve(VariableHost &host, const std::string &command, const char *keyword,
+               bool global = false)
   {
     if (!given_.is_variable()) return;
     index_ = host.find(given_.variable);
@@ -62,6 +68,12 @@ class EqualValue {
     if (!host.is_equal_style(index_))
       host.stop(command + ": variable " + given_.variable + " for " + keyword +
                 " is not equal-style");
+    if (!global) return;
+    const std::string read = atom_data_read_by(
+        host.formula(given_.variable), [&host](const std::string &name) { return host.formula(name); });
+    if (!read.empty())
+      host.stop(command + ": variables global, but variable " + given_.variable + " for " +
+                keyword + " reads per-atom data (" + read + "); give variables atoms");
   }
   bool is_variable() const { return given_.is_variable(); }
   const std::string &name() const { return given_.variable; }
