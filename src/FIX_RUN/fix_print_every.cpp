@@ -38,10 +38,8 @@ FixPrintEvery::FixPrintEvery(LAMMPS *lmp, int narg, char **arg) :
   // device only if changed: the line changes none
   datamask_modify = 0;
   screen = settings.screen;
-  text = utils::strdup(settings.text);
-  maxcopy = maxwork = (int) settings.text.size() + 1;
-  copy = (char *) memory->smalloc(maxcopy, "fix/print/every:copy");
-  work = (char *) memory->smalloc(maxwork, "fix/print/every:work");
+  // the file first: an error stops the constructor before it allocates what only the
+  // destructor frees
   if (!settings.file.empty() && comm->me == 0) {
     fp = fopen(settings.file.c_str(), settings.append ? "a" : "w");
     if (!fp)
@@ -52,6 +50,10 @@ FixPrintEvery::FixPrintEvery(LAMMPS *lmp, int narg, char **arg) :
     else
       fprintf(fp, "# Fix print/every output for fix %s\n", id);
   }
+  text = utils::strdup(settings.text);
+  maxcopy = maxwork = (int) settings.text.size() + 1;
+  copy = (char *) memory->smalloc(maxcopy, "fix/print/every:copy");
+  work = (char *) memory->smalloc(maxwork, "fix/print/every:work");
 }
 
 FixPrintEvery::~FixPrintEvery()
