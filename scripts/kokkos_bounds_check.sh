@@ -54,6 +54,6 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cp "$REPO"/examples/tidal_shear/in.* "$REPO"/examples/tidal_shear/consolidated_0.data "$work"/
 (cd "$work" && LD_LIBRARY_PATH="$build/plugin:${LD_LIBRARY_PATH:-}" \
-  "$PREFIX/bin/lmp" -in in.tidal_shear -var run_steps 2000 -k on t 1 -sf kk -log none \
+  "$BUILD/lmp" -in in.tidal_shear -var run_steps 2000 -k on t 1 -sf kk -log none \
   -screen log.kk >/dev/null) || { tail -30 "$work/log.kk"; exit 1; }
 log "done in $(( $(date +%s) - start )) s"
