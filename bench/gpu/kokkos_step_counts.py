@@ -149,7 +149,9 @@ def fluid_step_host_syncs(work, name, edit=None):
         text = open(path).read()
         open(path, "w").write(edit(text))
     ksync = os.path.join(d, "ksync.txt")
-    env = dict(os.environ, KOKKOS_PROFILE_LIBRARY=build_hook(work), LD_PRELOAD=build_hook(work),
+    # after what is preloaded already (a sanitizer's runtime must come first)
+    preload = ":".join(p for p in (os.environ.get("LD_PRELOAD", ""), build_hook(work)) if p)
+    env = dict(os.environ, KOKKOS_PROFILE_LIBRARY=build_hook(work), LD_PRELOAD=preload,
                KCOUNT_OUT=os.path.join(d, "kcount.txt"), KSYNC_OUT=ksync, OMP_NUM_THREADS="1",
                OMP_PROC_BIND="false")
     subprocess.run(["lmp", "-k", "on", "t", "1", "-sf", "kk", "-in", "in.tidal_shear", "-var", "fast",
