@@ -1,5 +1,6 @@
 """The package's styles in LIGGGHTS, each case checked against an analytic answer: fix
-darcy/pressure (tidal column, one grain, fluidisation, undrained compaction, restart, bad
+darcy/pressure (tidal column, one grain, fluidisation under each seepage force, the grain
+forces summed on a bed whose porosity steps, undrained compaction, restart, bad
 input) and fix wall/stress and shear/stress (free wall, loaded stack, rigid plate). Every
 tolerance is explained where it is set. A case is a function of a harness.Launch."""
 import math
@@ -104,6 +105,58 @@ def darcy_fluidise(launch):
     free_rise = 0.5 * (2.0 - 1.0) * CRITICAL_GRADIENT / 2600.0 * 0.05**2
     expect(3e-3 < rise[2.0] <= free_rise, f"rise {rise[2.0]:.4g} m at 2 G_c (free rise "
            f"{free_rise:.4g} m)")
+
+
+def darcy_fluidise_full(launch):
+    """Under seepage full the bed floats at (1 - phi)(rho_s - rho_f) g (in.darcy_bed_full, phi
+    = 1 - pi/6 in every cell): it stays at 0.9 of that gradient and lifts at 2, as on LAMMPS
+    (tests/lammps/test_fix_darcy_seepage.cpp)."""
+    critical = (math.pi / 6.0) * CRITICAL_GRADIENT
+    rise = {}
+    for factor in (0.9, 2.0):
+        tables, _ = launch.run("in.darcy_bed_full", {"pb": repr(factor * critical * 0.04)},
+                               f"log.full{factor}")
+        held, moving = tables[0][-1], tables[1]
+        close(held["fl[2]"], 1.0 - math.pi / 6.0, 1e-12, "the bed's porosity, uniform")
+        expect(all(r["Atoms"] == 256 for r in moving), "grains lost")
+        rise[factor] = moving[-1]["zmean"] - held["zmean"]
+    print(f"[ report ] seepage full, fluidisation: mean rise {rise[0.9]:.3e} m at 0.9x, "
+          f"{rise[2.0]:.3e} m at 2x (1 - phi)(rho_s - rho_f) g")
+    # as darcy_fluidise: at rest within 1 % of a diameter, lifted by more than 3 mm
+    expect(abs(rise[0.9]) < 1e-4, f"the bed moved {rise[0.9]:.3g} m below its critical gradient")
+    expect(rise[2.0] > 3e-3, f"rise {rise[2.0]:.4g} m at twice its critical gradient")
+
+
+def darcy_seepage_sums(launch):
+    """On a bed whose porosity steps (in.darcy_step), the grains' fluid forces sum to the
+    water's force on the cells under seepage full, 1500 Pa x (8a)(6a) = 28.8 N, and to its
+    solids' share -sum_c dp/dz_c (1 - phi_c) V_cell under seepage pressure (from the VTK
+    file's cell pressures and porosities, the fix's central differences and Dirichlet
+    ghosts), both to round-off, as on LAMMPS (tests/lammps/test_fix_darcy_seepage.cpp)."""
+    a = 0.02
+    nx, ny, nz, v_cell, dz = 4, 3, 4, 8 * a**3, 2 * a
+    total = 1500.0 * (8 * a) * (6 * a)
+    for seepage in ("full", "pressure"):
+        tables, _ = launch.run("in.darcy_step", {"seepage": seepage}, f"log.step_{seepage}")
+        last = tables[-1][-1]
+        fields = read_vtk(launch.path(f"step_{seepage}_300.vtk"))
+        p, phi = fields["pressure"], fields["porosity"]
+        cells = 0.0
+        for k in range(nz):
+            for c in range(k * nx * ny, (k + 1) * nx * ny):
+                below = p[c - nx * ny] if k > 0 else 2 * 1000.0 - p[c]
+                above = p[c + nx * ny] if k < nz - 1 else 2 * -500.0 - p[c]
+                share = 1.0 if seepage == "full" else 1.0 - phi[c]
+                cells -= (above - below) / (2 * dz) * share * v_cell
+        print(f"[ report ] seepage {seepage}: grains {last['fluid[3]']:.15g} N, cells "
+              f"{cells:.15g} N, porosity {min(phi):.3f}-{max(phi):.3f}")
+        expect(min(phi) < 0.5 and max(phi) > 0.7, "the porosity step is not there")
+        # the VTK file's values are printed to 17 digits: 1e-12 of the total, as on LAMMPS
+        close(last["fluid[3]"], cells, 1e-12 * total, f"{seepage}: the grains' sum")
+        close(last["fluid[1]"], 0.0, 1e-12 * total, f"{seepage}: the x sum")
+        close(last["fluid[2]"], 0.0, 1e-12 * total, f"{seepage}: the y sum")
+        if seepage == "full":
+            close(last["fluid[3]"], total, 1e-12 * total, "full: the water's force")
 
 
 def darcy_mesh_floor(launch):
@@ -369,6 +422,8 @@ CASES = {
     "darcy_column": darcy_column,
     "darcy_grain": darcy_grain,
     "darcy_fluidise": darcy_fluidise,
+    "darcy_seepage_sums": darcy_seepage_sums,
+    "darcy_fluidise_full": darcy_fluidise_full,
     "darcy_mesh_floor": darcy_mesh_floor,
     "darcy_undrained": darcy_undrained,
     "darcy_restart": darcy_restart,
