@@ -89,9 +89,12 @@ def darcy_relaxed(hosts):
 
 def darcy_seepage(hosts):
     """the same scene with `seepage full`: identical in both hosts, and on the same pressure
-    field as the default force (the grains' motion is prescribed) each grain's horizontal
-    fluid force is the default's times 1/(1 - phi) at the grain, within the porosity clamp's
-    1/(1 - 0.1) to 1/(1 - 0.9); the vertical one holds the unchanged buoyancy"""
+    field as the default force (the grains' motion is prescribed) a different force: each
+    cell's gradient over its own solid fraction, 1/(1 - phi_c) within the porosity clamp's
+    1/(1 - 0.1) to 1/(1 - 0.9), interpolated to the grain. Where the gradients of a grain's
+    corner cells share a sign the ratio to the default's force lies in that range; where
+    they differ in sign it has no bound, so the check counts the components in the range
+    and that the forces differ (the sums the factors conserve: darcy_seepage_sums)"""
     liggghts = hosts["liggghts"]
     liggghts.run("in.cross_darcy", {"host": "liggghts"}, "log.pressure")
     pressure = read_rows(liggghts.path("cross_grains.txt"))
@@ -100,11 +103,13 @@ def darcy_seepage(hosts):
     ratios = [full[i][d] / pressure[i][d] for i in pressure for d in (6, 7)
               if abs(pressure[i][d]) > 1e-9]
     expect(len(ratios) > 100, f"only {len(ratios)} horizontal fluid forces to compare")
-    expect(all(1.0 / 0.9 <= r <= 1.0 / 0.1 for r in ratios),
-           f"seepage full / pressure outside [1/0.9, 1/0.1]: {min(ratios)} .. {max(ratios)}")
+    inside = sum(1.0 / 0.9 <= r <= 1.0 / 0.1 for r in ratios)
+    expect(inside > 0.5 * len(ratios), f"seepage full / pressure within [1/0.9, 1/0.1] for only "
+           f"{inside} of {len(ratios)} components")
+    expect(all(abs(r - 1.0) > 1e-9 for r in ratios), "seepage full left a force unchanged")
     print(f"[ report ] cross-host darcy, seepage full (np {liggghts.np}): thermo, grid and grains "
-          f"identical to the last digit; horizontal force / the default's {min(ratios):.4f} .. "
-          f"{max(ratios):.4f} over {len(ratios)} components")
+          f"identical to the last digit; horizontal force / the default's within [1/0.9, 1/0.1] "
+          f"for {inside} of {len(ratios)} components ({min(ratios):.4f} .. {max(ratios):.4f})")
 
 
 def walls(hosts):
