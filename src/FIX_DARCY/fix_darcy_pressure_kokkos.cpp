@@ -214,6 +214,10 @@ template <class DeviceType> FixDarcyPressureKokkos<DeviceType>::~FixDarcyPressur
 template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::setup(int vflag)
 {
   held_in_pass.reset();
+  reader_every.clear();    // the fix list LAMMPS calls during this run is the one now
+  for (int k = 0; k < modify->nfix; ++k)
+    if ((modify->fmask[k] & FixConst::END_OF_STEP) && modify->fix[k]->nevery > 0)
+      reader_every.push_back(modify->fix[k]->nevery);
   FixDarcyPressure::setup(vflag);
   k_fluid_force.template sync<LMPHostType>();
 }
@@ -234,10 +238,8 @@ template <class DeviceType> bool FixDarcyPressureKokkos<DeviceType>::per_grain_o
 {
   const bigint step = update->ntimestep;
   if (step == output->next) return true;
-  for (int k = 0; k < modify->nfix; ++k)
-    if ((modify->fmask[k] & FixConst::END_OF_STEP) && modify->fix[k]->nevery > 0 &&
-        step % modify->fix[k]->nevery == 0)
-      return true;
+  for (const int every : reader_every)
+    if (step % every == 0) return true;
   return false;
 }
 
@@ -269,12 +271,10 @@ template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::grow_fluid_
   array_atom = fluid_force;
 }
 
-// equal-style variables read atom data on the host, as in LAMMPS' own KOKKOS fixes that
-// evaluate them (fix setforce/kk): the per-atom values and group data they can reference
+// equal-style variables read atom data on the host (unless `variables global`)
 template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::sync_for_variables()
 {
-  atomKK->sync(Host, X_MASK | V_MASK | F_MASK | TAG_MASK | TYPE_MASK | MASK_MASK | IMAGE_MASK |
-                   RMASS_MASK | RADIUS_MASK);
+  porewater::sync_for_host_variables(atomKK);
 }
 
 template <class DeviceType> void FixDarcyPressureKokkos<DeviceType>::sync_for_nonfinite_check()

@@ -15,6 +15,8 @@
 #include "kokkos_grains.h"
 #include "kokkos_type.h"
 
+#include <vector>
+
 namespace porewater {
 // the per-atom held fluid force, rows of 3
 template <class DeviceType> struct KokkosHeldRows {
@@ -54,6 +56,7 @@ template <class DeviceType> class FixDarcyPressureKokkos : public FixDarcyPressu
 
  private:
   bool per_grain_output_read_now() const;    // another style may read f_ID this step
+  std::vector<int> reader_every;             // the end_of_step fixes' intervals (setup)
   porewater::PassStamp held_in_pass;    // the step whose held force the fused pass added
   Grains *kernels;
   DAT::tdual_ffloat_2d k_fluid_force;    // `fluid_force` is its host view

@@ -20,7 +20,9 @@ template <class DeviceType> using Grains = porewater::KokkosGrains<DeviceType>;
 
 template <class DeviceType>
 FixShearStressKokkos<DeviceType>::FixShearStressKokkos(LAMMPS *lmp, int narg, char **arg) :
-    FixShearStress(lmp, narg, arg), on_device(false), host_current(true), state("shear/stress:state"), d_totals("shear/stress:totals", porewater::KokkosPlateSumsThenStep<DeviceType>::count)
+    FixShearStress(lmp, narg, arg), on_device(false), host_current(true),
+    state("shear/stress:state"),
+    d_totals("shear/stress:totals", porewater::KokkosPlateSumsThenStep<DeviceType>::count)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;

@@ -2,11 +2,11 @@
    fix wall/stress/kk (see doc/fix_wall_stress.rst)
 
    On one rank, from a run's setup (on the host, as the CPU fix) on, the wall lives on the
-   device; the end of a run brings a copy to the host. The step's velocity Verlet is the CPU fix's, in the same order: the
-   kernel of post_force first applies, as every grain sees it, the last step's final kick
-   and this step's initial kick and drift, then sums the contacts, and its final (once, on
-   the device) takes the wall's force and stores the half-step state; the host's
-   initial_integrate and final_integrate do nothing there.
+   device; the end of a run brings a copy to the host. The step's velocity Verlet is the CPU
+   fix's, in the same order: the kernel of post_force first applies, as every grain sees it,
+   the last step's final kick and this step's initial kick and drift, then sums the
+   contacts, and its final (once, on the device) takes the wall's force and stores the
+   half-step state; the host's initial_integrate and final_integrate do nothing there.
 ------------------------------------------------------------------------- */
 
 #include "fix_wall_stress_kokkos.h"
@@ -21,7 +21,8 @@ using namespace LAMMPS_NS;
 template <class DeviceType>
 FixWallStressKokkos<DeviceType>::FixWallStressKokkos(LAMMPS *lmp, int narg, char **arg) :
     FixWallStress(lmp, narg, arg), on_device(false), half_step(false), step_done(false),
-    host_current(true), state("wall/stress:state"), d_totals("wall/stress:totals", porewater::KokkosWallStep<DeviceType>::count)
+    host_current(true), state("wall/stress:state"),
+    d_totals("wall/stress:totals", porewater::KokkosWallStep<DeviceType>::count)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
@@ -159,8 +160,7 @@ template <class DeviceType> void FixWallStressKokkos<DeviceType>::grain_contacts
 
 template <class DeviceType> void FixWallStressKokkos<DeviceType>::sync_for_variables()
 {
-  atomKK->sync(Host, X_MASK | V_MASK | F_MASK | TAG_MASK | TYPE_MASK | MASK_MASK | IMAGE_MASK |
-                   RMASS_MASK | RADIUS_MASK);
+  porewater::sync_for_host_variables(atomKK);
 }
 
 namespace LAMMPS_NS {

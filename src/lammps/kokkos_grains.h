@@ -7,6 +7,7 @@
 #define PW_LAMMPS_KOKKOS_GRAINS_H
 
 #include "atom_kokkos.h"
+#include "atom_masks.h"
 #include "kokkos_type.h"
 
 #include <string>
@@ -131,6 +132,15 @@ void kokkos_sum_over_grains_on_device(const char *name, int n, const Body &body,
       Space, Kokkos::Impl::ParallelReduce<SumOverGrainsOnDevice<Body>, Policy, Kokkos::InvalidType, Space>);
   Kokkos::parallel_reduce(name, grain_range<DeviceType>(0, n > 0 ? n : 1),
                           SumOverGrainsOnDevice<Body>{Body::count, body, n}, totals);
+}
+
+// The atom data an equal-style variable evaluated on the host may read (per-atom values,
+// group functions, thermo keywords), brought there from the device, as LAMMPS' own KOKKOS
+// fixes do before they evaluate one (fix setforce/kk)
+inline void sync_for_host_variables(LAMMPS_NS::AtomKokkos *atomKK)
+{
+  atomKK->sync(LAMMPS_NS::Host, X_MASK | V_MASK | F_MASK | TAG_MASK | TYPE_MASK | MASK_MASK |
+                                    IMAGE_MASK | RMASS_MASK | RADIUS_MASK);
 }
 
 // A small state of a /kk fix kept on the device between steps, with its host copy: the
