@@ -1,8 +1,8 @@
 """The beds and scenes the studies start from: beds packed and consolidated anew or the
 shipped ones consolidated again at another stiffness, the friction while packing that starts a
-bed at a target coordination, the Table S1 bed, and the shipped bed tiled into the larger
-scenes the cost studies time (SCENES, tiled). Every bed runs with the groups of the example
-kept for its own H and phi (examples/tidal_shear/groups.py: bed_groups)."""
+bed at a target coordination, the Table S1 bed and beds prepared as it, and the shipped bed
+tiled into the larger scenes the cost studies time (SCENES, tiled). Every bed runs with the
+groups of the example kept for its own H and phi (examples/tidal_shear/groups.py: bed_groups)."""
 import os
 import shutil
 import subprocess
@@ -42,6 +42,29 @@ def prepare_bed(work, name, variables, shipped=None):
         run_lmp(d, "in.pack", dict(variables, output=source), log="log.pack")
     run_lmp(d, "in.consolidate", dict(variables, input=source, output="bed.data"),
             log="log.consolidate")
+    return out
+
+
+def prepare_stiff_bed(d, variables, ranks=2):
+    """a bed prepared as the Table S1 bed (in.pack and in.consolidate at the reduced case's
+    k_n, in.consolidate again at Table S1's for RESETTLE s) in folder d, with the -var
+    `variables` (its size, radii, mu_prep): its data file. Each stage's file is kept, so a
+    preparation stopped midway goes on from the last."""
+    out = os.path.join(d, "bed.data")
+    if os.path.exists(out):
+        return out
+    prepare(d)
+    soft = dict(variables, kn=KN, **short({}, {"settle_time": SMOKE_SETTLE}))
+    if not os.path.exists(os.path.join(d, "packed.data")):
+        run_lmp(d, "in.pack", dict(soft, output="packed.data"), ranks=ranks, log="log.pack")
+    if not os.path.exists(os.path.join(d, "soft.data")):
+        run_lmp(d, "in.consolidate", dict(soft, input="packed.data", output="soft.data"),
+                ranks=ranks, log="log.consolidate_soft")
+    run_lmp(d, "in.consolidate", dict(variables, **STIFF["kn100"], input="soft.data",
+                                      output="bed.data.new",
+                                      settle_time=short(RESETTLE, SMOKE_SETTLE)),
+            ranks=ranks, log="log.consolidate")
+    os.replace(os.path.join(d, "bed.data.new"), out)
     return out
 
 

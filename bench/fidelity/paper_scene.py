@@ -43,7 +43,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from common import out_dir, short    # noqa: E402
 from common.ensembles import AGAINST_PAPER, PERIOD, PERTURB, band, run_metrics, summary    # noqa: E402
-from common.beds import bed_geometry, bisect_mu_prep    # noqa: E402
+from common.beds import bed_geometry, bisect_mu_prep, prepare_stiff_bed    # noqa: E402
 from common.runs import complete, freeze_plugin, load, prepare, run_example, run_lmp    # noqa: E402
 from porewater_analysis.timeseries import nearest_rows    # noqa: E402
 
@@ -54,7 +54,6 @@ ORIGINAL_MEMBERS = short(2, 1)
 TABLE_S1_CYCLES, TABLE_S1_PERIOD = 3, 5.0
 MU_TALL = 0.0444                 # bench/creep_factors/creep_factors_bisect.md: 4.61 by the original's
                                  # count at the reduced case's k_n; the first probe of table_s1_friction
-SOFT_KN = 1.16e7                 # the Table S1 bed is packed at the reduced case's k_n
 DUMP_CYCLES = 0.25
 COST_CYCLES = short(0.05, 0.002)
 COST_RANKS = (1, 2)
@@ -140,25 +139,9 @@ def bed_folder(mu, name):
 
 
 def table_s1_bed(work, mu=MU_TALL, ranks=2):
-    """the Table S1 bed (in.pack with friction mu, in.consolidate at SOFT_KN, then at Table
-    S1's k_n): its file"""
-    d = os.path.join(work, bed_folder(mu, "table_s1_bed"))
-    out = os.path.join(d, "bed.data")
-    if os.path.exists(out):
-        return out
-    prepare(d)
-    common = {"full": 1, "mu_prep": mu}
-    if not os.path.exists(os.path.join(d, "packed.data")):
-        run_lmp(d, "in.pack", dict(common, kn=SOFT_KN, output="packed.data"), ranks=ranks,
-                log="log.pack")
-    if not os.path.exists(os.path.join(d, "soft.data")):
-        run_lmp(d, "in.consolidate", dict(common, kn=SOFT_KN, input="packed.data",
-                                          output="soft.data"), ranks=ranks,
-                log="log.consolidate_soft")
-    run_lmp(d, "in.consolidate", dict(common, input="soft.data", output="bed.data.new",
-                                      settle_time=0.05), ranks=ranks, log="log.consolidate")
-    os.replace(os.path.join(d, "bed.data.new"), out)
-    return out
+    """the Table S1 bed packed with friction mu (common.beds.prepare_stiff_bed): its file"""
+    return prepare_stiff_bed(os.path.join(work, bed_folder(mu, "table_s1_bed")),
+                             {"full": 1, "mu_prep": mu}, ranks)
 
 
 TARGET_Z, TARGET_TOL = 4.58, 0.15   # the original run's count at t = 0.01 s; bisect beyond

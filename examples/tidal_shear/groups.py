@@ -6,6 +6,8 @@ and its scaling").
     /usr/bin/python3 groups.py [--markdown]
     /usr/bin/python3 groups.py --bed FILE    (a bed of one's own: the -var values that keep
                                               the reduced case's groups for its H and phi)
+    /usr/bin/python3 groups.py --layers FILE (the held base and the shear plate as the
+                                              original marks them: their -var values)
 
 H (top of the highest grain over the floor) and phi (1 - grain volume/(L_x L_y H)) of the
 reduced cases come from their consolidated states; Table S1's are the supplement's 0.47 m at
@@ -63,16 +65,37 @@ def bed_geometry(path):
         parts = line.split()
         if len(parts) == 4 and parts[2].endswith("lo"):
             box[parts[2][0]] = float(parts[1]) - float(parts[0])
+    radius, z = bed_grains(path)
+    top = max(0.0, max(zi + ri for zi, ri in zip(z, radius)))
+    volume = sum(4.0 / 3.0 * math.pi * r ** 3 for r in radius)
+    return top, 1 - volume / (box["x"] * box["y"] * top)
+
+
+def bed_grains(path):
+    """(radius, z) of every grain of a LAMMPS data file of atom_style sphere"""
+    lines = open(path).read().splitlines()
     start = next(i for i, l in enumerate(lines) if l.startswith("Atoms")) + 2
-    top, volume = 0.0, 0.0
+    radius, z = [], []
     for line in lines[start:]:
         if not line.strip():
             break
         v = line.split()
-        r = float(v[2]) / 2
-        top = max(top, float(v[6]) + r)
-        volume += 4.0 / 3.0 * math.pi * r ** 3
-    return top, 1 - volume / (box["x"] * box["y"] * top)
+        radius.append(float(v[2]) / 2)
+        z.append(float(v[6]))
+    return radius, z
+
+
+def original_layer_cuts(path):
+    """(bottom_cut, top_cut) of in.tidal_shear: the held base and the shear plate as the
+    original marks them (sphere.py shear(), lines 3115-3147 of klkkong/sphere): the grains
+    whose centres lie within the largest diameter of the lower (upper) 30 % of the bed from
+    the lowest (highest) grain surface"""
+    radius, z = bed_grains(path)
+    low = min(zi - ri for zi, ri in zip(z, radius))
+    high = max(zi + ri for zi, ri in zip(z, radius))
+    below = 2 * max(ri for zi, ri in zip(z, radius) if zi < (high - low) * 0.3)
+    above = 2 * max(ri for zi, ri in zip(z, radius) if zi > (high - low) * 0.7)
+    return low + below, high - above
 
 
 def bed_parameters(height, phi):
@@ -132,6 +155,10 @@ def groups(c):
 
 
 def main():
+    if "--layers" in sys.argv:
+        print("-var bottom_cut %.17g -var top_cut %.17g" % original_layer_cuts(
+            sys.argv[sys.argv.index("--layers") + 1]))
+        return
     if "--bed" in sys.argv:
         height, phi = bed_geometry(sys.argv[sys.argv.index("--bed") + 1])
         print("H %.4f m, phi %.4f; keeping the reduced case's groups: %s" % (height, phi, " ".join(

@@ -22,7 +22,9 @@ coordination/original, the bed starts lower, and no row's count by them may exce
 whose pairs include theirs). `-var bed` with another value stops with an error naming the
 allowed values. Grain dumps (`-var dump_every`) write positions at full precision (17
 significant digits), and the mean of their per-grain count by the original's rules is the
-time series' coordination_original of that step.
+time series' coordination_original of that step. The held base and the shear plate are the
+grains within a diameter of the floor and of the highest centre, or, with groups.py --layers'
+cuts, the original's (about a radius under the highest centre).
 
 Usage: check_tidal_shear_beds.py --lmp LMP --plugin-dir DIR
 """
@@ -37,7 +39,7 @@ import tempfile
 EXAMPLE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples",
                        "tidal_shear")
 sys.path.insert(0, EXAMPLE)
-from groups import bed_geometry, bed_parameters    # noqa: E402
+from groups import bed_geometry, bed_grains, bed_parameters, original_layer_cuts    # noqa: E402
 
 # name: (-var switches, bed file, integrator, solver, coordination at the first row or None,
 #        steps, {parameter: value} besides, where "dt" is relative to the default's)
@@ -136,6 +138,35 @@ def dumps(lmp, work, env):
           "series' %s" % (mean, series))
 
 
+def group_size(log, group):
+    return int(next(l.split()[0] for l in log.splitlines() if l.endswith("atoms in group " + group)))
+
+
+def layers(lmp, work, env):
+    """the held base and the shear plate: by default the grains whose centres lie within a
+    diameter of the floor and of the highest centre; with groups.py --layers' cuts the
+    original's (sphere.py shear(): a diameter from the lowest and highest grain surfaces, the
+    largest diameter of the lower and upper 30 %), on the shipped bed whose radii spread by
+    0.9 %: the plate the grains above the highest centre less 0.9-1.1 radii"""
+    radius, z = bed_grains(os.path.join(EXAMPLE, "consolidated_0.data"))
+    r, top = 0.01, max(z)
+    bottom_cut, top_cut = original_layer_cuts(os.path.join(EXAMPLE, "consolidated_0.data"))
+    for name, switches, bottom, plate in (
+            ("default", [], sum(zi < 2 * r for zi in z), sum(zi > top - 2 * r for zi in z)),
+            ("original", ["bottom_cut", repr(bottom_cut), "top_cut", repr(top_cut)],
+             sum(zi < bottom_cut for zi in z), sum(zi > top_cut for zi in z))):
+        print("-- layers %s" % name)
+        out = run(lmp, work, env, switches, "log.layers_" + name, 10)
+        check(out.returncode == 0, "runs (exit %d)" % out.returncode)
+        log = open(os.path.join(work, "log.layers_" + name)).read()
+        got = group_size(log, "bottom"), group_size(log, "top")
+        check(got == (bottom, plate), "held base and plate %s grains (the data file: %d, %d)"
+              % (got, bottom, plate))
+    check(top - 1.1 * r < top_cut < top - 0.9 * r and 1.9 * r < bottom_cut < 2.1 * r,
+          "the original's plate from %.4f m (highest centre %.4f m), base under %.4f m"
+          % (top_cut, top, bottom_cut))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--lmp", required=True)
@@ -151,6 +182,7 @@ def main():
         for name in CASES:
             case(args.lmp, work, env, name)
         dumps(args.lmp, work, env)
+        layers(args.lmp, work, env)
         print("-- bed packed")
         out = run(args.lmp, work, env, ["bed", "packed"], "log.bad")
         said = out.stdout + open(os.path.join(work, "log.bad")).read()
