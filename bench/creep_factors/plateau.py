@@ -28,8 +28,6 @@ k_n, gamma_w and eps 0.14. Each run RUN_CYCLES cycles on 1 rank, two side by sid
                  halfshear-darcy-stress-mod-starter.py keeps (its setDEMstepsPerCFDstep(10),
                  line 60, is commented out); Table S1 as run and the example: every 10th,
                  the force held between
-  face0.45       the drained face 0.45 cell under the plate, as the original's grid puts it
-                 (cell_z from the control's mean plate height in cycle 1)
 
 Metrics by the original's count (coordination/original), from each time series: the first row
 (t 0.01 s) and the mean over phases 0.2-0.6 of cycle 1 (before the first slip) and of cycle 2
@@ -56,8 +54,8 @@ from common import out_dir, short    # noqa: E402
 from common.beds import SPREAD, STIFF, bed_geometry, prepare_stiff_bed    # noqa: E402
 from common.ensembles import PERIOD, PERTURB, band    # noqa: E402
 from common.runs import (complete, freeze_plugin, head_commit, load, read_cost,    # noqa: E402
-                         run_example)
-from creep_factors import LAYERS, TALL_GRAINS, tall_groups    # noqa: E402
+                         run_example, time_step)
+from creep_factors import TALL_GRAINS, tall_groups    # noqa: E402
 from groups import original_layer_cuts    # noqa: E402
 from porewater_analysis.cycles import phase_mask    # noqa: E402
 from porewater_analysis.dump import read_dump    # noqa: E402
@@ -68,8 +66,8 @@ MU_PREP_S1 = 0.0148            # bench/fidelity/table_s1/README.md: Table S1's b
 RUN_CYCLES = short(1.65, 0.002)     # through cycle 2's phase 0.6
 PHASES = (0.2, 0.6)
 DUMP_CYCLES = 0.1
+EPS = 0.14                          # the stiff preset's
 PLATE_S1, PLATE_AS_RUN = 280.0, 1100.0
-FACE_ORIGINAL = 0.45
 OUT = out_dir(HERE)
 STORE = os.path.join(OUT, "plateau_runs.json")
 DATA_FILE = os.path.join(os.path.dirname(HERE), "common", "original_run_contacts.txt")
@@ -81,34 +79,21 @@ def plateau_bed(work):
         "ngrains": TALL_GRAINS, "radius_spread": SPREAD, "mu_prep": MU_PREP_S1})
 
 
-def base_dt(eps=0.14):
-    """in.params' step at Table S1's k_n (the 0.01 m grains of density 2600)"""
-    return eps / np.sqrt(STIFF["kn100"]["kn"] / (2600.0 * 4.0 / 3.0 * np.pi * 0.01 ** 3))
+def run_dt():
+    return time_step(STIFF["kn100"]["kn"], EPS)
 
 
 def base_variables(bed):
     """the runs' -var values: the groups for the bed's H and phi, the stiff preset's k_n,
     gamma_w, eps, grain dumps every DUMP_CYCLES (the count by height)"""
     height, phi = bed_geometry(bed)
-    eps = 0.14
-    dt = base_dt(eps)
-    return dict(tall_groups(height, phi), **STIFF["kn100"], eps=eps, data="bed.data",
-                cycles=RUN_CYCLES, dump_every=int(round(DUMP_CYCLES * PERIOD / dt)))
-
-
-def plate_mean(work, name="control0", cycle=1):
-    """the plate's mean height over `cycle` of a run (m), or None before it is there"""
-    path = os.path.join(work, name, "timeseries.txt")
-    if not complete(path, cycle * PERIOD):
-        return None
-    c = load(path)
-    rows = c["time"] <= cycle * PERIOD
-    return float(np.mean(c["x_top"][rows]))
+    return dict(tall_groups(height, phi), **STIFF["kn100"], eps=EPS, data="bed.data",
+                cycles=RUN_CYCLES, dump_every=int(round(DUMP_CYCLES * PERIOD / run_dt())))
 
 
 def case_variables(work, case, base):
     """-var overrides of a case (control0, control1, ..., plate280, ...; factors joined by
-    "+" together), or None when it waits for another run"""
+    "+" together)"""
     if case.startswith("control"):
         k = int(case[len("control"):])
         return dict(base, **({} if k == 0 else {"perturb": PERTURB, "perturb_seed": k}))
@@ -123,21 +108,14 @@ def case_variables(work, case, base):
             variables.update(bottom_cut=repr(bottom), top_cut=repr(top))
         elif factor == "fluid1":
             variables["fluid_every"] = 1
-        elif factor == "face0.45":
-            top = plate_mean(work)
-            if top is None:
-                return None
-            variables["cell_z"] = top / (2 * LAYERS + FACE_ORIGINAL)
         else:
             raise SystemExit("unknown case %s: control<K>, or factors joined by +: plate280, "
-                             "original, layers, fluid1, face0.45" % case)
+                             "original, layers, fluid1" % case)
     return variables
 
 
 def run_case(work, bed, case):
     variables = case_variables(work, case, base_variables(bed))
-    if variables is None:
-        return case, "waits for control0's first cycle"
     cpu = run_example(os.path.join(work, case), variables, RUN_CYCLES * PERIOD, data=bed)
     return case, "done before" if cpu is None else "%.0f s CPU" % cpu
 
@@ -171,8 +149,7 @@ def data_file():
 LABELS = {"plate280": "the plate 280 kg (Table S1's listed mass), not 1.1 t",
           "layers": "the held base and the shear plate as the original marks them",
           "original": "the original's numerics (integrator, pressure iteration)",
-          "fluid1": "the fluid stepped with every grain step (the original's ndem 1)",
-          "face0.45": "the drained face 0.45 cell under the plate"}
+          "fluid1": "the fluid stepped with every grain step (the original's ndem 1)"}
 TABLE_S1 = os.path.join(os.path.dirname(HERE), "fidelity", "table_s1", "timeseries.txt.xz")
 
 
@@ -198,7 +175,7 @@ def profile(work, case):
     d = 2 * np.median(first["radius"])
     moving = (first["z"] > first["z"].min() + d) & (first["z"] < first["z"].max() - d)
     out = {}
-    steps_per_cycle = PERIOD / base_dt()
+    steps_per_cycle = PERIOD / run_dt()
     for path in dumps:
         phase = int(path.rsplit("_", 1)[1].split(".")[0]) / steps_per_cycle
         cycle = int(phase) + 1

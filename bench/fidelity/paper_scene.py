@@ -38,13 +38,12 @@ import shutil
 import sys
 from concurrent.futures import ThreadPoolExecutor
 
-import numpy as np
-
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from common import out_dir, short    # noqa: E402
 from common.ensembles import AGAINST_PAPER, PERIOD, PERTURB, band, run_metrics, summary    # noqa: E402
 from common.beds import bed_geometry, bisect_mu_prep, prepare_stiff_bed    # noqa: E402
-from common.runs import complete, freeze_plugin, load, prepare, run_example, run_lmp    # noqa: E402
+from common.runs import (complete, freeze_plugin, load, prepare, run_example, run_lmp,    # noqa: E402
+                         time_step)
 from porewater_analysis.timeseries import nearest_rows    # noqa: E402
 
 WORK = "/work/runs/paper_scene"
@@ -150,7 +149,7 @@ BISECT_ROUNDS = 2                   # of two probes each, 1 rank per probe, side
 
 def table_s1_row_steps(eps):
     """in.tidal_shear's nout at Table S1's k_n: the steps between time-series rows"""
-    dt = eps / np.sqrt(1.16e9 / (2600.0 * 4.0 / 3.0 * np.pi * 0.01 ** 3))
+    dt = time_step(1.16e9, eps)
     return 10 * round(TABLE_S1_PERIOD / (1000 * dt * 10))
 
 
